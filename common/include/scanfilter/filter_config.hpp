@@ -1,0 +1,28 @@
+#pragma once
+#include <optional>
+#include <string>
+
+#include "scanfilter/sensor_info.hpp"
+#include "scanfilter/two_step_filter.hpp"
+
+namespace scanfilter {
+
+// The filter's configuration as written in YAML (config/filter.yaml documents
+// every key). Values marked `auto` there come from the sensor at run time.
+struct FilterConfig {
+  TwoStepFilterParams params;
+  std::optional<double> angular_accuracy_deg;  // unset: the log header's
+  std::optional<double> d_min;                 // unset: the sensor's range_min
+  std::optional<double> d_max;                 // unset: the sensor's range_max
+
+  // Parameters for one sensor, with every `auto` value filled in.
+  TwoStepFilterParams resolve(const SensorInfo& sensor) const;
+};
+
+// Loads and validates a filter config; throws InputError naming the file, the
+// line and the key. Keys left out keep their defaults; unknown keys are errors
+// (a misspelt key would otherwise be silently ignored).
+FilterConfig loadFilterConfig(const std::string& path);
+FilterConfig parseFilterConfig(const std::string& yaml_text, const std::string& name);
+
+}  // namespace scanfilter

@@ -1,0 +1,39 @@
+#pragma once
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "scanfilter/jump_filter_params.hpp"
+
+namespace scanfilter {
+
+// The parts of step 1 that both implementations must compute identically:
+// the neighbour radius of equation (5) and the span test of (6)-(7).
+class JumpClusterRule {
+ public:
+  explicit JumpClusterRule(const JumpFilterParams& params);
+
+  // d_th of equation (5) for a point at `range`: it is proportional to the
+  // range, so the ratio is computed once.
+  double neighbourRadius(double range) const { return radius_per_metre_ * range; }
+  double radiusPerMetre() const { return radius_per_metre_; }
+
+  // Equations (6) and (7) on one cluster. `members` are beam indices in
+  // increasing order; `beam_count` and `full_turn` describe the scan so the
+  // span can wrap across the seam; `seed` is the cluster's first index.
+  bool keepsCluster(std::span<const std::uint32_t> members, std::span<const double> ranges,
+                    std::size_t beam_count, bool full_turn, double angle_increment) const;
+
+  // θ_th of equation (7) for a cluster of mean range d_ave (and seed range d_seed).
+  double spanThreshold(double d_ave, double d_seed) const;
+
+  // Span of a cluster in beams (eq. 6), the smallest arc on a full turn.
+  static std::uint32_t spanInBeams(std::span<const std::uint32_t> members, std::size_t beam_count,
+                                   bool full_turn);
+
+ private:
+  JumpFilterParams params_;
+  double radius_per_metre_;
+};
+
+}  // namespace scanfilter

@@ -1,0 +1,93 @@
+#pragma once
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "scanfilter/implementation.hpp"
+#include "scanfilter/penetration_filter_params.hpp"
+#include "scanfilter/penetration_grid.hpp"
+#include "scanfilter/penetration_rule.hpp"
+#include "scanfilter/scan.hpp"
+#include "scanfilter/sensor_info.hpp"
+
+namespace scanfilter {
+
+// Step 2: the grid penetration model (paper section 4.2). A cache of recent
+// frames votes into a grid; a point of the newest frame whose beam passes
+// through an obstacle cell is a misdetection. The newest frame is judged
+// against a grid it did not vote in, then joins the cache.
+class PenetrationFilter {
+ public:
+  explicit PenetrationFilter(const PenetrationFilterParams& params);
+  virtual ~PenetrationFilter() = default;
+
+  // `labels` holds step 1's codes; valid points found misdetected become
+  // kMisdetected. Frames must come in stamp order.
+  void apply(const Scan& scan, const SensorInfo& sensor, std::span<std::uint8_t> labels);
+
+  // Forget every cached frame and start the warm-up again.
+  void reset();
+
+  const PenetrationGrid& grid() const { return grid_; }
+  const PenetrationFilterParams& params() const { return params_; }
+  std::size_t framesSinceReset() const { return frames_seen_; }
+  std::size_t cachedFrames() const { return cache_.size(); }
+  std::size_t resetCount() const { return resets_; }
+  bool warmedUp() const { return frames_seen_ >= static_cast<std::size_t>(params_.min_frames); }
+
+ protected:
+  // Called once per judged frame, before the first isMisdetected().
+  virtual void prepareJudging() {}
+  // True when the beam from sensor r to p passes through an obstacle cell.
+  virtual bool isMisdetected(const Eigen::Vector2d& r, const Eigen::Vector2d& p) = 0;
+
+  PenetrationFilterParams params_;
+  PenetrationRule rule_;
+  PenetrationGrid grid_;
+
+ private:
+  struct CachedFrame {
+    double stamp;
+    std::vector<Eigen::Vector2d> points;
+  };
+  void resetOnPoseJump(const Eigen::Vector2d& origin, double stamp);
+  void expireFrames(double stamp);
+  void cacheFrame(double stamp, std::span<const std::uint8_t> labels);
+
+  std::deque<CachedFrame> cache_;
+  std::vector<Eigen::Vector2d> points_;  // world points of the frame being judged
+  std::optional<Eigen::Vector2d> last_origin_;
+  std::size_t frames_seen_ = 0;
+  std::size_t resets_ = 0;
+};
+
+// Steps a-f as printed: every point is tested against every obstacle cell.
+class ReferencePenetrationFilter final : public PenetrationFilter {
+ public:
+  using PenetrationFilter::PenetrationFilter;
+
+ private:
+  void prepareJudging() override;
+  bool isMisdetected(const Eigen::Vector2d& r, const Eigen::Vector2d& p) override;
+  std::vector<Eigen::Vector2d> obstacles_;
+};
+
+// Walks each beam through the grid, visiting only the cells of a thick ray
+// around it: the cost per point follows the beam's length, not the map.
+class FastPenetrationFilter final : public PenetrationFilter {
+ public:
+  using PenetrationFilter::PenetrationFilter;
+
+ private:
+  bool isMisdetected(const Eigen::Vector2d& r, const Eigen::Vector2d& p) override;
+};
+
+std::unique_ptr<PenetrationFilter> makePenetrationFilter(const PenetrationFilterParams& params,
+                                                         Implementation impl);
+
+}  // namespace scanfilter

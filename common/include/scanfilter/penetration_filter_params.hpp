@@ -1,0 +1,23 @@
+#pragma once
+#include <cstddef>
+
+namespace scanfilter {
+
+// Parameters of step 2, the grid penetration model (paper section 4.2).
+// Defaults are the values chosen by the sweep in docs/accuracy.md;
+// config/filter.yaml documents every key and gives the paper-literal preset.
+struct PenetrationFilterParams {
+  double cell_size = 0.05;          // m, W_g
+  double frame_lifetime = 2.0;      // s, T_max: cached frames older than this leave
+  int min_frames = 5;               // F_Lmin: frames seen before anything is judged
+  int obstacle_threshold = 2;       // obs_th: a cell counting more points is an obstacle
+  double corridor_half_width = 0.035;  // m, step (c): cells farther off the beam are ignored
+  double own_surface_margin = 0.15;    // m, cells nearer the point are its own surface
+  double own_surface_margin_per_m = 0.02;  // m per m of range added to that margin
+  double behind_margin = 0.0;       // m, step (e) read literally: cells this near beyond p mark it
+  double pose_jump_reset = 0.5;     // m, a larger sensor jump between frames resets the cache
+  std::size_t max_cache_frames = 200;  // bound on cached frames whatever T_max says
+  bool cache_misdetected_points = false;  // misdetected points vote in later grids
+};
+
+}  // namespace scanfilter

@@ -1,0 +1,77 @@
+#pragma once
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <unordered_map>
+
+#include <Eigen/Core>
+
+namespace scanfilter {
+
+// Integer cell coordinates of a grid anchored at the world origin.
+struct CellIndex {
+  std::int32_t x = 0;
+  std::int32_t y = 0;
+  bool operator==(const CellIndex&) const = default;
+};
+
+// Point counts per cell of width W_g, stored in tiles that exist only where
+// cached points are, so memory follows the cache, not the explored area, and a
+// lookup costs the same however large the area is.
+class PenetrationGrid {
+ public:
+  static constexpr int kTileBits = 5;  // 32 x 32 cells a tile
+  static constexpr int kTileSide = 1 << kTileBits;
+
+  explicit PenetrationGrid(double cell_size) : cell_size_(cell_size) {}
+
+  double cellSize() const { return cell_size_; }
+  CellIndex cellOf(const Eigen::Vector2d& p) const {
+    return {static_cast<std::int32_t>(std::floor(p.x() / cell_size_)),
+            static_cast<std::int32_t>(std::floor(p.y() / cell_size_))};
+  }
+  Eigen::Vector2d cellCentre(CellIndex c) const {
+    return {(c.x + 0.5) * cell_size_, (c.y + 0.5) * cell_size_};
+  }
+
+  void add(const Eigen::Vector2d& p) { change(cellOf(p), +1); }
+  void remove(const Eigen::Vector2d& p) { change(cellOf(p), -1); }
+  void clear() { tiles_.clear(); last_key_ = kNoKey; last_tile_ = nullptr; }
+
+  // Count of one cell; 0 where no tile exists.
+  int count(CellIndex c) const;
+
+  // Calls fn(cell, count) for every cell whose count is above `threshold`.
+  void forEachCellAbove(int threshold, const std::function<void(CellIndex, int)>& fn) const;
+
+  std::size_t tileCount() const { return tiles_.size(); }
+  std::size_t memoryBytes() const { return tiles_.size() * (sizeof(Tile) + 3 * sizeof(void*)); }
+
+ private:
+  struct Tile {
+    std::array<std::uint32_t, kTileSide * kTileSide> counts{};
+    std::uint32_t total = 0;  // sum of counts: the tile is freed at zero
+  };
+  static constexpr std::uint64_t kNoKey = ~std::uint64_t{0};
+
+  static std::uint64_t tileKey(CellIndex c) {
+    const auto tx = static_cast<std::uint32_t>(c.x >> kTileBits);
+    const auto ty = static_cast<std::uint32_t>(c.y >> kTileBits);
+    return (static_cast<std::uint64_t>(tx) << 32) | ty;
+  }
+  static std::size_t slot(CellIndex c) {
+    return static_cast<std::size_t>((c.y & (kTileSide - 1)) * kTileSide + (c.x & (kTileSide - 1)));
+  }
+  const Tile* findTile(std::uint64_t key) const;
+  void change(CellIndex c, int delta);
+
+  double cell_size_;
+  std::unordered_map<std::uint64_t, std::unique_ptr<Tile>> tiles_;
+  // One-entry cache: consecutive lookups of a beam walk mostly hit one tile.
+  mutable std::uint64_t last_key_ = kNoKey;
+  mutable const Tile* last_tile_ = nullptr;
+};
+
+}  // namespace scanfilter

@@ -1,0 +1,47 @@
+#pragma once
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "scanfilter/scan.hpp"
+#include "scanfilter/sensor_info.hpp"
+
+namespace scanfilter {
+
+// +1 when the beam angle grows counter-clockwise with the index, else -1.
+inline double directionSign(BeamDirection d) { return d == BeamDirection::kCcw ? 1.0 : -1.0; }
+
+// Beam angle in the sensor frame (as the log stores it).
+inline double beamAngle(const Scan& scan, std::size_t i) {
+  return scan.angle_min + static_cast<double>(i) * scan.angle_increment;
+}
+
+// The sensor origin in the world frame: pose.xy + R(pose.theta) * mount.xy.
+Eigen::Vector2d sensorOrigin(const Pose2& pose, const SensorMount& mount);
+
+// World direction of beam i: pose.theta + mount.yaw + s * beam angle.
+double beamWorldAngle(const Scan& scan, const SensorInfo& sensor, std::size_t i);
+
+// World point of beam i at its range (the scan log format's formula).
+Eigen::Vector2d beamToWorld(const Scan& scan, const SensorInfo& sensor, std::size_t i);
+
+// The paper's equation (4): robot pose (x0, y0, θ0), sensor C metres behind the
+// centre, zero direction θc, beam angle θp and range dis_p; angles grow clockwise.
+Eigen::Vector2d paperEquation4(const Pose2& robot, double c, double theta_c, double theta_p,
+                               double dis_p);
+
+// Points of one scan in the sensor's own frame, with the direction applied so
+// that angles grow counter-clockwise: what the jump filter clusters on.
+// Beams without a return get NaN coordinates.
+void sensorFramePoints(const Scan& scan, const SensorInfo& sensor,
+                       std::vector<Eigen::Vector2d>& out);
+
+// World points of one scan; beams without a return get NaN coordinates.
+void worldPoints(const Scan& scan, const SensorInfo& sensor, std::vector<Eigen::Vector2d>& out);
+
+// True when the scan's beams cover a whole turn, so the first and last beams
+// are neighbours (the seam).
+bool isFullTurn(const Scan& scan);
+
+}  // namespace scanfilter

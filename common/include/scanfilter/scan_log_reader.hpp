@@ -1,0 +1,36 @@
+#pragma once
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "scanfilter/line_reader.hpp"
+#include "scanfilter/scan_source.hpp"
+
+namespace scanfilter {
+
+// Streams a `.scanlog.jsonl` file (shared/docs/scan-log-format.md), one scan
+// at a time, validating every field. Unknown keys are kept, never rejected.
+class ScanLogReader final : public ScanSource {
+ public:
+  explicit ScanLogReader(const std::string& path);
+
+  const ScanLogHeader& header() const override { return header_; }
+  bool next(ScanRecord& record) override;
+
+  // Upper bound on a believable range (m): larger values are corrupt data,
+  // not "out of range", and are rejected.
+  static constexpr double kImplausibleRange = 1.0e4;
+  // Upper bound on beams per scan: guards memory against corrupt input.
+  static constexpr std::size_t kMaxBeams = 1u << 20;
+
+ private:
+  void parseHeader();
+  void parseScan(const nlohmann::ordered_json& object, Scan& scan);
+
+  LineReader lines_;
+  ScanLogHeader header_;
+  double last_stamp_ = 0.0;
+  bool have_stamp_ = false;
+};
+
+}  // namespace scanfilter

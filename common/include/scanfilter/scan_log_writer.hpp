@@ -1,0 +1,27 @@
+#pragma once
+#include <fstream>
+#include <string>
+
+#include "scanfilter/scan_source.hpp"
+
+namespace scanfilter {
+
+// Writes a `.scanlog.jsonl` file. A scan read from a scan log is written as
+// its original line plus `labels`; any other scan is serialised from Scan.
+class ScanLogWriter {
+ public:
+  ScanLogWriter(const std::string& path, const ScanLogHeader& header);
+
+  void write(const ScanRecord& record);
+  void close();
+
+ private:
+  std::string path_;
+  std::ofstream out_;
+};
+
+// JSON of a header line and of a scan line (used by the writer and tests).
+nlohmann::ordered_json headerToJson(const ScanLogHeader& header);
+nlohmann::ordered_json scanToJson(const Scan& scan);
+
+}  // namespace scanfilter

@@ -1,0 +1,38 @@
+#pragma once
+#include <memory>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "scanfilter/scan.hpp"
+#include "scanfilter/sensor_info.hpp"
+
+namespace scanfilter {
+
+// One scan as read from a log, with the line it came from so a filter's
+// output can keep every key of its input.
+struct ScanRecord {
+  Scan scan;
+  nlohmann::ordered_json original;  // null when the scan did not come from a scan log
+  std::size_t line = 0;
+};
+
+// A stream of scans with a fixed header: a scan log, a CARMEN log, the simulator.
+class ScanSource {
+ public:
+  virtual ~ScanSource() = default;
+  virtual const ScanLogHeader& header() const = 0;
+  // Next scan; false at the end. Throws InputError on bad input.
+  virtual bool next(ScanRecord& record) = 0;
+};
+
+// Options for logs whose header does not say everything.
+struct ScanSourceOptions {
+  double carmen_range_max = 80.0;  // m; CARMEN logs write >= 80 m for "no return"
+};
+
+// Opens a scan log or a CARMEN log (plain or gzip), told apart by content.
+std::unique_ptr<ScanSource> openScanSource(const std::string& path,
+                                           const ScanSourceOptions& options = {});
+
+}  // namespace scanfilter

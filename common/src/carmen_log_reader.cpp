@@ -1,0 +1,175 @@
+#include "scanfilter/carmen_log_reader.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <sstream>
+
+#include "scanfilter/input_error.hpp"
+
+namespace scanfilter {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kFlaserFieldOfView = std::numbers::pi;  // 180°
+// Fields after the ranges of a FLASER line: x y theta odom_x odom_y odom_theta
+// ipc_timestamp ipc_hostname logger_timestamp.
+constexpr std::size_t kFlaserTrailingFields = 9;
+// Fields after ranges (and remissions) of ROBOTLASER1: laser pose 3, robot pose 3,
+// tv rv forward_safety_dist side_safety_dist, ipc_timestamp ipc_hostname logger_timestamp.
+constexpr std::size_t kRobotLaserTrailingFields = 13;
+constexpr std::size_t kRobotLaserHeadFields = 9;  // name .. num_readings
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> tokens;
+  std::istringstream in(line);
+  for (std::string token; in >> token;) tokens.push_back(std::move(token));
+  return tokens;
+}
+
+bool isScanLine(const std::string& line) {
+  return line.rfind("FLASER ", 0) == 0 || line.rfind("ROBOTLASER1 ", 0) == 0;
+}
+
+}  // namespace
+
+CarmenLogReader::CarmenLogReader(const std::string& path, const ScanSourceOptions& options)
+    : lines_(path) {
+  header_.source = "CARMEN log " + path;
+  header_.sensor.direction = BeamDirection::kCcw;
+  header_.sensor.range_max = options.carmen_range_max;
+  // PARAM lines precede the first scan; read up to it to fill the header.
+  std::string line;
+  while (lines_.next(line)) {
+    if (isScanLine(line)) {
+      pending_ = line;
+      pending_line_ = lines_.lineNumber();
+      break;
+    }
+    const auto tokens = split(line);
+    if (tokens.size() < 3 || tokens[0] != "PARAM") continue;
+    current_line_ = lines_.lineNumber();
+    if (tokens[1] == "robot_frontlaser_offset")
+      header_.sensor.mount.x = number(tokens, 2, "robot_frontlaser_offset");
+    if (tokens[1] == "robot_front_laser_max")
+      header_.sensor.range_max = number(tokens, 2, "robot_front_laser_max");
+  }
+  if (!pending_) throw InputError(path, 0, "", "no FLASER or ROBOTLASER1 line: not a CARMEN laser log");
+  // The angular accuracy defaults to the beam step of the first scan.
+  current_line_ = pending_line_;
+  Scan first;
+  const auto tokens = split(*pending_);
+  if (tokens[0] == "FLASER") parseFlaser(tokens, first);
+  else parseRobotLaser(tokens, first);
+  header_.sensor.angular_accuracy_deg = std::abs(first.angle_increment) * 180.0 / std::numbers::pi;
+}
+
+void CarmenLogReader::fail(const std::string& field, const std::string& problem) const {
+  throw InputError(lines_.path(), current_line_, field, problem);
+}
+
+double CarmenLogReader::number(const std::vector<std::string>& tokens, std::size_t index,
+                               const char* field) const {
+  if (index >= tokens.size())
+    fail(field, "missing: line has " + std::to_string(tokens.size()) + " fields");
+  const std::string& t = tokens[index];
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
+  if (ec != std::errc() || end != t.data() + t.size() || !std::isfinite(value))
+    fail(std::string(field) + " (field " + std::to_string(index + 1) + ")",
+         "expected a finite number, got \"" + t + "\"");
+  return value;
+}
+
+void CarmenLogReader::setRanges(const std::vector<std::string>& tokens, std::size_t first,
+                                std::size_t count, Scan& scan) const {
+  scan.ranges.resize(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const double r = number(tokens, first + i, "range");
+    if (r < 0.0) fail("range " + std::to_string(i), "is negative (" + tokens[first + i] + ")");
+    const bool no_return = r < header_.sensor.range_min || r >= header_.sensor.range_max || r == 0.0;
+    scan.ranges[i] = no_return ? kNaN : r;
+  }
+}
+
+void CarmenLogReader::parseFlaser(const std::vector<std::string>& tokens, Scan& scan) const {
+  const double n_value = number(tokens, 1, "num_readings");
+  if (n_value < 1.0 || n_value != std::floor(n_value)) fail("num_readings", "expected a positive integer");
+  const auto n = static_cast<std::size_t>(n_value);
+  if (tokens.size() != 2 + n + kFlaserTrailingFields)
+    fail("FLASER", "has " + std::to_string(tokens.size()) + " fields; " + std::to_string(n) +
+                       " readings need " + std::to_string(2 + n + kFlaserTrailingFields));
+  setRanges(tokens, 2, n, scan);
+  const std::size_t pose = 2 + n;
+  scan.pose = {number(tokens, pose, "x"), number(tokens, pose + 1, "y"), number(tokens, pose + 2, "theta")};
+  scan.stamp = number(tokens, pose + 6, "ipc_timestamp");
+  const double steps = n % 2 == 1 && n > 1 ? static_cast<double>(n - 1) : static_cast<double>(n);
+  scan.angle_min = -kFlaserFieldOfView / 2.0;
+  scan.angle_increment = kFlaserFieldOfView / steps;
+}
+
+void CarmenLogReader::parseRobotLaser(const std::vector<std::string>& tokens, Scan& scan) const {
+  const double start_angle = number(tokens, 2, "start_angle");
+  const double resolution = number(tokens, 4, "angular_resolution");
+  if (resolution == 0.0) fail("angular_resolution", "is 0; expected a non-zero step");
+  const double n_value = number(tokens, 8, "num_readings");
+  if (n_value < 1.0 || n_value != std::floor(n_value)) fail("num_readings", "expected a positive integer");
+  const auto n = static_cast<std::size_t>(n_value);
+  std::size_t after = kRobotLaserHeadFields + n;
+  if (tokens.size() < after + kRobotLaserTrailingFields)
+    fail("ROBOTLASER1", "has " + std::to_string(tokens.size()) + " fields; too few for " +
+                            std::to_string(n) + " readings");
+  setRanges(tokens, kRobotLaserHeadFields, n, scan);
+  // Some CARMEN versions insert num_remissions [remissions] after the ranges.
+  if (tokens.size() > after + kRobotLaserTrailingFields) {
+    const auto remissions = static_cast<std::size_t>(number(tokens, after, "num_remissions"));
+    after += 1 + remissions;
+    if (tokens.size() != after + kRobotLaserTrailingFields)
+      fail("ROBOTLASER1", "field count does not match num_readings and num_remissions");
+  }
+  // The laser pose is given directly, so it is the pose and the mount is zero.
+  scan.pose = {number(tokens, after, "laser_pose_x"), number(tokens, after + 1, "laser_pose_y"),
+               number(tokens, after + 2, "laser_pose_theta")};
+  scan.stamp = number(tokens, after + 10, "ipc_timestamp");
+  scan.angle_min = start_angle;
+  scan.angle_increment = resolution;
+}
+
+bool CarmenLogReader::readScanLine(std::string& line) {
+  if (pending_) {
+    line = std::move(*pending_);
+    pending_.reset();
+    current_line_ = pending_line_;
+    return true;
+  }
+  while (lines_.next(line)) {
+    if (isScanLine(line)) {
+      current_line_ = lines_.lineNumber();
+      return true;
+    }
+  }
+  return false;
+}
+
+bool CarmenLogReader::next(ScanRecord& record) {
+  std::string line;
+  if (!readScanLine(line)) return false;
+  record = ScanRecord{};
+  record.line = current_line_;
+  const auto tokens = split(line);
+  if (tokens[0] == "FLASER") parseFlaser(tokens, record.scan);
+  else parseRobotLaser(tokens, record.scan);
+  if (record.scan.stamp < last_stamp_) {
+    std::ostringstream problem;
+    problem.precision(17);
+    problem << record.scan.stamp << " is earlier than the previous scan's " << last_stamp_
+            << "; stamps must not decrease";
+    fail("ipc_timestamp", problem.str());
+  }
+  last_stamp_ = record.scan.stamp;
+  return true;
+}
+
+}  // namespace scanfilter

@@ -1,0 +1,49 @@
+#include "scanfilter/jump_cluster_rule.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace scanfilter {
+
+namespace {
+double degToRad(double deg) { return deg * std::numbers::pi / 180.0; }
+}  // namespace
+
+JumpClusterRule::JumpClusterRule(const JumpFilterParams& params)
+    : params_(params),
+      radius_per_metre_(2.0 * std::sin(degToRad(params.angular_accuracy_deg)) * params.alpha /
+                        std::cos(degToRad(params.theta_k_deg))) {}
+
+double JumpClusterRule::spanThreshold(double d_ave, double d_seed) const {
+  const double d = params_.span_range == SpanRange::kClusterMean ? d_ave : d_seed;
+  const double d_span = params_.d_max - params_.d_min;
+  const double t = d_span > 0.0 ? std::clamp((d - params_.d_min) / d_span, 0.0, 1.0) : 0.0;
+  const double l = params_.l_min + (params_.l_max - params_.l_min) * t;
+  return 2.0 * std::atan(l / (2.0 * d_ave));
+}
+
+std::uint32_t JumpClusterRule::spanInBeams(std::span<const std::uint32_t> members,
+                                          std::size_t beam_count, bool full_turn) {
+  const std::uint32_t linear = members.back() - members.front();
+  if (!full_turn || members.size() < 2) return linear;
+  // Smallest arc covering the cluster: the whole turn less its largest gap.
+  std::uint32_t largest_gap =
+      static_cast<std::uint32_t>(beam_count) - members.back() + members.front();
+  for (std::size_t k = 1; k < members.size(); ++k)
+    largest_gap = std::max(largest_gap, members[k] - members[k - 1]);
+  return static_cast<std::uint32_t>(beam_count) - largest_gap;
+}
+
+bool JumpClusterRule::keepsCluster(std::span<const std::uint32_t> members,
+                                   std::span<const double> ranges, std::size_t beam_count,
+                                   bool full_turn, double angle_increment) const {
+  double sum = 0.0;
+  for (std::uint32_t m : members) sum += ranges[m];  // index order: same sum in both filters
+  const double d_ave = sum / static_cast<double>(members.size());
+  const double span =
+      static_cast<double>(spanInBeams(members, beam_count, full_turn)) * std::abs(angle_increment);
+  return span >= spanThreshold(d_ave, ranges[members.front()]);
+}
+
+}  // namespace scanfilter

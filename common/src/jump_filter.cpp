@@ -1,0 +1,126 @@
+#include "scanfilter/jump_filter.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "scanfilter/point_code.hpp"
+#include "scanfilter/scan_geometry.hpp"
+
+namespace scanfilter {
+
+void JumpFilter::apply(const Scan& scan, const SensorInfo& sensor, std::span<std::uint8_t> labels) {
+  const std::size_t n = scan.size();
+  sensorFramePoints(scan, sensor, points_);
+  full_turn_ = isFullTurn(scan);
+  free_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    free_[i] = scan.hasReturn(i) ? 1 : 0;
+    labels[i] = static_cast<std::uint8_t>(scan.hasReturn(i) ? PointCode::kValid : PointCode::kNoReturn);
+  }
+  prepare(scan);
+  for (std::uint32_t seed = 0; seed < n; ++seed) {
+    if (!free_[seed]) continue;
+    cluster_.clear();
+    growCluster(seed, scan);
+    // Index order makes the span and mean range independent of growth order.
+    std::sort(cluster_.begin(), cluster_.end());
+    if (!rule_.keepsCluster(cluster_, scan.ranges, n, full_turn_, scan.angle_increment)) {
+      for (std::uint32_t m : cluster_) labels[m] = static_cast<std::uint8_t>(PointCode::kJump);
+    }
+  }
+}
+
+// --- Reference: the paper's steps 2-5 literally -----------------------------
+
+void ReferenceJumpFilter::growCluster(std::uint32_t seed, const Scan& scan) {
+  free_[seed] = 0;
+  cluster_.push_back(seed);
+  const auto n = static_cast<std::uint32_t>(scan.size());
+  // Breadth-first: every new member searches all free points of the scan.
+  for (std::size_t k = 0; k < cluster_.size(); ++k) {
+    const std::uint32_t m = cluster_[k];
+    const double radius = rule_.neighbourRadius(scan.ranges[m]);
+    const double radius_sq = radius * radius;
+    for (std::uint32_t j = 0; j < n; ++j) {
+      if (free_[j] && isNeighbour(m, j, radius_sq)) {
+        free_[j] = 0;
+        cluster_.push_back(j);
+      }
+    }
+  }
+}
+
+// --- Fast: angular window plus skip list ------------------------------------
+
+void FastJumpFilter::prepare(const Scan& scan) {
+  const auto n = static_cast<std::uint32_t>(scan.size());
+  next_free_.resize(n + 1);
+  for (std::uint32_t i = 0; i <= n; ++i) next_free_[i] = i;
+  for (std::uint32_t i = 0; i < n; ++i)
+    if (!free_[i]) next_free_[i] = i + 1;
+
+  // A disc of radius k·d around a point at range d subtends asin(k) from the
+  // sensor; two beams of margin absorb rounding. k >= 1 means no bound.
+  const double k = rule_.radiusPerMetre();
+  const double increment = std::abs(scan.angle_increment);
+  if (k >= 1.0 || increment <= 0.0) {
+    half_window_ = n;
+  } else {
+    const double beams = std::floor(std::asin(k) / increment) + 2.0;
+    half_window_ = beams >= n ? n : static_cast<std::uint32_t>(beams);
+  }
+}
+
+std::uint32_t FastJumpFilter::nextFree(std::uint32_t i) {
+  std::uint32_t root = i;
+  while (next_free_[root] != root) root = next_free_[root];
+  while (next_free_[i] != root) {  // path compression
+    const std::uint32_t next = next_free_[i];
+    next_free_[i] = root;
+    i = next;
+  }
+  return root;
+}
+
+void FastJumpFilter::claim(std::uint32_t i) {
+  free_[i] = 0;
+  next_free_[i] = i + 1;
+  cluster_.push_back(i);
+}
+
+void FastJumpFilter::visitFreeIn(std::uint32_t from, std::uint32_t to, std::uint32_t member,
+                                 double radius_sq) {
+  for (std::uint32_t j = nextFree(from); j <= to; j = nextFree(j + 1)) {
+    if (isNeighbour(member, j, radius_sq)) claim(j);
+  }
+}
+
+void FastJumpFilter::growCluster(std::uint32_t seed, const Scan& scan) {
+  claim(seed);
+  const auto n = static_cast<std::uint32_t>(scan.size());
+  const bool whole_scan = 2 * static_cast<std::uint64_t>(half_window_) + 1 >= n;
+  for (std::size_t k = 0; k < cluster_.size(); ++k) {
+    const std::uint32_t m = cluster_[k];
+    const double radius = rule_.neighbourRadius(scan.ranges[m]);
+    const double radius_sq = radius * radius;
+    if (whole_scan) {
+      visitFreeIn(0, n - 1, m, radius_sq);
+      continue;
+    }
+    const std::int64_t lo = static_cast<std::int64_t>(m) - half_window_;
+    const std::int64_t hi = static_cast<std::int64_t>(m) + half_window_;
+    visitFreeIn(static_cast<std::uint32_t>(std::max<std::int64_t>(lo, 0)),
+                static_cast<std::uint32_t>(std::min<std::int64_t>(hi, n - 1)), m, radius_sq);
+    if (!full_turn_) continue;
+    // Across the seam: the window continues at the other end of the scan.
+    if (lo < 0) visitFreeIn(static_cast<std::uint32_t>(lo + n), n - 1, m, radius_sq);
+    if (hi >= n) visitFreeIn(0, static_cast<std::uint32_t>(hi - n), m, radius_sq);
+  }
+}
+
+std::unique_ptr<JumpFilter> makeJumpFilter(const JumpFilterParams& params, Implementation impl) {
+  if (impl == Implementation::kReference) return std::make_unique<ReferenceJumpFilter>(params);
+  return std::make_unique<FastJumpFilter>(params);
+}
+
+}  // namespace scanfilter

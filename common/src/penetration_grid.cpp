@@ -1,0 +1,52 @@
+#include "scanfilter/penetration_grid.hpp"
+
+#include <cassert>
+
+namespace scanfilter {
+
+const PenetrationGrid::Tile* PenetrationGrid::findTile(std::uint64_t key) const {
+  if (key == last_key_) return last_tile_;
+  const auto it = tiles_.find(key);
+  last_key_ = key;
+  last_tile_ = it == tiles_.end() ? nullptr : it->second.get();
+  return last_tile_;
+}
+
+int PenetrationGrid::count(CellIndex c) const {
+  const Tile* tile = findTile(tileKey(c));
+  return tile ? static_cast<int>(tile->counts[slot(c)]) : 0;
+}
+
+void PenetrationGrid::change(CellIndex c, int delta) {
+  const std::uint64_t key = tileKey(c);
+  auto it = tiles_.find(key);
+  if (it == tiles_.end()) {
+    assert(delta > 0 && "removing a point that was never added");
+    it = tiles_.emplace(key, std::make_unique<Tile>()).first;
+    last_key_ = kNoKey;  // a lookup may have cached this key as absent
+  }
+  Tile& tile = *it->second;
+  std::uint32_t& cell = tile.counts[slot(c)];
+  cell = static_cast<std::uint32_t>(static_cast<std::int64_t>(cell) + delta);
+  tile.total = static_cast<std::uint32_t>(static_cast<std::int64_t>(tile.total) + delta);
+  if (tile.total == 0) {
+    if (last_tile_ == it->second.get()) last_key_ = kNoKey;
+    tiles_.erase(it);
+  }
+}
+
+void PenetrationGrid::forEachCellAbove(int threshold,
+                                       const std::function<void(CellIndex, int)>& fn) const {
+  for (const auto& [key, tile] : tiles_) {
+    const auto tx = static_cast<std::int32_t>(key >> 32);
+    const auto ty = static_cast<std::int32_t>(key & 0xffffffffu);
+    for (int sy = 0; sy < kTileSide; ++sy) {
+      for (int sx = 0; sx < kTileSide; ++sx) {
+        const auto n = static_cast<int>(tile->counts[static_cast<std::size_t>(sy * kTileSide + sx)]);
+        if (n > threshold) fn({tx * kTileSide + sx, ty * kTileSide + sy}, n);
+      }
+    }
+  }
+}
+
+}  // namespace scanfilter

@@ -1,0 +1,45 @@
+#include "scanfilter/removal_score.hpp"
+
+namespace scanfilter {
+
+namespace {
+bool isRemoved(std::uint8_t code) {
+  return code == static_cast<std::uint8_t>(PointCode::kJump) ||
+         code == static_cast<std::uint8_t>(PointCode::kMisdetected);
+}
+}  // namespace
+
+void RemovalScore::add(const Scan& scan, std::span<const std::uint8_t> labels) {
+  ++frames_;
+  for (std::uint8_t code : labels) ++label_counts_[code];
+  if (scan.truth.empty()) return;
+  ++truth_frames_;
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    const auto truth = static_cast<PointCode>(scan.truth[i]);
+    const auto label = static_cast<PointCode>(labels[i]);
+    // A removed artefact counts for the kind of artefact it truly is, whichever step removed it.
+    if (truth == PointCode::kJump) {
+      ++jump_.truth;
+      jump_.truth_removed += isRemoved(labels[i]);
+    } else if (truth == PointCode::kMisdetected) {
+      ++misdetected_.truth;
+      misdetected_.truth_removed += isRemoved(labels[i]);
+    } else if (truth == PointCode::kValid) {
+      ++valid_truth_;
+      valid_deleted_ += isRemoved(labels[i]);
+    }
+    RemovalClassScore* by_label = label == PointCode::kJump ? &jump_
+                                  : label == PointCode::kMisdetected ? &misdetected_
+                                                                     : nullptr;
+    if (by_label) {
+      ++by_label->labelled;
+      by_label->labelled_artefact += isRemoved(scan.truth[i]);
+    }
+  }
+  for (std::uint32_t beam : scan.thin_leg_beams) {
+    ++thin_truth_;
+    thin_kept_ += labels[beam] == static_cast<std::uint8_t>(PointCode::kValid);
+  }
+}
+
+}  // namespace scanfilter

@@ -1,0 +1,209 @@
+#include "scanfilter/scan_log_reader.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "scanfilter/input_error.hpp"
+#include "scanfilter/point_code.hpp"
+
+namespace scanfilter {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Validates fields of one JSON line and reports problems with file and line.
+class FieldChecker {
+ public:
+  FieldChecker(const std::string& file, std::size_t line) : file_(file), line_(line) {}
+
+  [[noreturn]] void fail(const std::string& field, const std::string& problem) const {
+    throw InputError(file_, line_, field, problem);
+  }
+
+  const Json& require(const Json& object, const char* key) const {
+    const auto it = object.find(key);
+    if (it == object.end()) fail(key, "missing");
+    return *it;
+  }
+
+  double finiteNumber(const Json& value, const std::string& field) const {
+    if (!value.is_number()) fail(field, "expected a number, got " + describe(value));
+    const double x = value.get<double>();
+    if (!std::isfinite(x)) fail(field, "expected a finite number, got " + describe(value));
+    return x;
+  }
+
+  std::array<double, 3> triple(const Json& value, const std::string& field) const {
+    if (!value.is_array() || value.size() != 3)
+      fail(field, "expected an array of 3 numbers [x, y, theta], got " + describe(value));
+    return {finiteNumber(value[0], field + "[0]"), finiteNumber(value[1], field + "[1]"),
+            finiteNumber(value[2], field + "[2]")};
+  }
+
+  static std::string describe(const Json& value) {
+    std::string text = value.dump();
+    constexpr std::size_t kMaxShown = 60;
+    if (text.size() > kMaxShown) text = text.substr(0, kMaxShown) + "...";
+    return text;
+  }
+
+ private:
+  const std::string& file_;
+  std::size_t line_;
+};
+
+Json parseLine(const std::string& text, const std::string& file, std::size_t line) {
+  try {
+    Json object = Json::parse(text);
+    if (!object.is_object()) throw InputError(file, line, "", "expected a JSON object");
+    return object;
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError(file, line, "", std::string("malformed JSON: ") + e.what());
+  }
+}
+
+bool isNaNString(const Json& value) {
+  if (!value.is_string()) return false;
+  const auto& s = value.get_ref<const std::string&>();
+  return s == "NaN" || s == "nan" || s == "inf" || s == "Infinity" || s == "-inf";
+}
+
+std::vector<std::uint8_t> parseCodes(const Json& array, const char* key, std::size_t expected,
+                                     const FieldChecker& check) {
+  if (!array.is_array()) check.fail(key, "expected an array of point codes");
+  if (array.size() != expected)
+    check.fail(key, "has " + std::to_string(array.size()) + " entries, ranges has " +
+                        std::to_string(expected) + "; expected equal lengths");
+  std::vector<std::uint8_t> codes(expected);
+  for (std::size_t i = 0; i < expected; ++i) {
+    const Json& v = array[i];
+    if (!v.is_number_integer() || !isValidPointCode(v.get<int>()))
+      check.fail(std::string(key) + "[" + std::to_string(i) + "]",
+                 "expected a point code 0-3, got " + FieldChecker::describe(v));
+    codes[i] = static_cast<std::uint8_t>(v.get<int>());
+  }
+  return codes;
+}
+
+}  // namespace
+
+ScanLogReader::ScanLogReader(const std::string& path) : lines_(path) { parseHeader(); }
+
+void ScanLogReader::parseHeader() {
+  std::string text;
+  if (!lines_.next(text)) throw InputError(lines_.path(), 1, "", "empty file: expected a header line");
+  const FieldChecker check(lines_.path(), lines_.lineNumber());
+  const Json object = parseLine(text, lines_.path(), lines_.lineNumber());
+  const Json& version = check.require(object, "scanlog");
+  if (!version.is_number_integer() || version.get<int>() != 1)
+    check.fail("scanlog", "unsupported version " + FieldChecker::describe(version) + "; expected 1");
+  header_.version = 1;
+  if (const auto it = object.find("source"); it != object.end() && it->is_string())
+    header_.source = it->get<std::string>();
+
+  const Json& sensor = check.require(object, "sensor");
+  if (!sensor.is_object()) check.fail("sensor", "expected an object");
+  const auto mount = check.triple(check.require(sensor, "mount"), "sensor.mount");
+  header_.sensor.mount = {mount[0], mount[1], mount[2]};
+  const Json& direction = check.require(sensor, "direction");
+  if (direction == "ccw") {
+    header_.sensor.direction = BeamDirection::kCcw;
+  } else if (direction == "cw") {
+    header_.sensor.direction = BeamDirection::kCw;
+  } else {
+    check.fail("sensor.direction", "expected \"ccw\" or \"cw\", got " + FieldChecker::describe(direction));
+  }
+  SensorInfo& s = header_.sensor;
+  s.range_min = check.finiteNumber(check.require(sensor, "range_min"), "sensor.range_min");
+  s.range_max = check.finiteNumber(check.require(sensor, "range_max"), "sensor.range_max");
+  if (s.range_min < 0.0) check.fail("sensor.range_min", "is negative; expected >= 0");
+  if (!(s.range_max > s.range_min))
+    check.fail("sensor.range_max", "must exceed range_min (" + std::to_string(s.range_min) + ")");
+  s.angular_accuracy_deg =
+      check.finiteNumber(check.require(sensor, "angular_accuracy_deg"), "sensor.angular_accuracy_deg");
+  if (!(s.angular_accuracy_deg > 0.0)) check.fail("sensor.angular_accuracy_deg", "expected > 0");
+}
+
+bool ScanLogReader::next(ScanRecord& record) {
+  std::string text;
+  do {
+    if (!lines_.next(text)) return false;
+  } while (text.find_first_not_of(" \t") == std::string::npos);  // blank lines carry nothing
+  record.line = lines_.lineNumber();
+  record.original = parseLine(text, lines_.path(), record.line);
+  parseScan(record.original, record.scan);
+  return true;
+}
+
+void ScanLogReader::parseScan(const Json& object, Scan& scan) {
+  const FieldChecker check(lines_.path(), lines_.lineNumber());
+  scan = Scan{};
+  scan.stamp = check.finiteNumber(check.require(object, "stamp"), "stamp");
+  if (have_stamp_ && scan.stamp < last_stamp_) {
+    std::ostringstream problem;
+    problem.precision(17);
+    problem << scan.stamp << " is earlier than the previous scan's " << last_stamp_
+            << "; stamps must not decrease";
+    check.fail("stamp", problem.str());
+  }
+  const auto pose = check.triple(check.require(object, "pose"), "pose");
+  scan.pose = {pose[0], pose[1], pose[2]};
+  scan.angle_min = check.finiteNumber(check.require(object, "angle_min"), "angle_min");
+  scan.angle_increment = check.finiteNumber(check.require(object, "angle_increment"), "angle_increment");
+  if (scan.angle_increment == 0.0) check.fail("angle_increment", "is 0; expected a non-zero step");
+
+  const Json& ranges = check.require(object, "ranges");
+  if (!ranges.is_array()) check.fail("ranges", "expected an array");
+  if (ranges.empty()) check.fail("ranges", "is empty; a scan needs at least one beam");
+  if (ranges.size() > kMaxBeams)
+    check.fail("ranges", "has " + std::to_string(ranges.size()) + " beams; at most " +
+                             std::to_string(kMaxBeams) + " are accepted");
+  const std::size_t n = ranges.size();
+  const SensorInfo& sensor = header_.sensor;
+  scan.ranges.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Json& v = ranges[i];
+    const std::string field = "ranges[" + std::to_string(i) + "]";
+    if (v.is_null() || isNaNString(v)) {
+      scan.ranges[i] = kNaN;
+      continue;
+    }
+    if (!v.is_number()) check.fail(field, "expected a number or null, got " + FieldChecker::describe(v));
+    const double r = v.get<double>();
+    if (r < 0.0) check.fail(field, "is negative (" + FieldChecker::describe(v) + "); expected >= 0 or null");
+    if (r > kImplausibleRange)
+      check.fail(field, FieldChecker::describe(v) + " m is beyond any indoor sensor; expected <= " +
+                            std::to_string(static_cast<int>(kImplausibleRange)) + " m or null");
+    // 0 and values outside the sensor's limits are "no return" by the format.
+    scan.ranges[i] = (r == 0.0 || r < sensor.range_min || r > sensor.range_max) ? kNaN : r;
+  }
+
+  if (const auto it = object.find("intensities"); it != object.end() && !it->is_null()) {
+    if (!it->is_array() || it->size() != n)
+      check.fail("intensities", "has " + std::to_string(it->is_array() ? it->size() : 0) +
+                                    " entries, ranges has " + std::to_string(n) + "; expected equal lengths");
+    scan.intensities.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+      scan.intensities[i] = (*it)[i].is_null() ? 0.0
+                                               : check.finiteNumber((*it)[i], "intensities[" + std::to_string(i) + "]");
+  }
+  if (const auto it = object.find("truth"); it != object.end()) scan.truth = parseCodes(*it, "truth", n, check);
+  if (const auto it = object.find("labels"); it != object.end()) scan.labels = parseCodes(*it, "labels", n, check);
+  if (const auto it = object.find("truth_thin_leg"); it != object.end()) {
+    if (!it->is_array()) check.fail("truth_thin_leg", "expected an array of beam indices");
+    for (std::size_t k = 0; k < it->size(); ++k) {
+      const Json& v = (*it)[k];
+      if (!v.is_number_unsigned() || v.get<std::size_t>() >= n)
+        check.fail("truth_thin_leg[" + std::to_string(k) + "]",
+                   "expected a beam index below " + std::to_string(n) + ", got " + FieldChecker::describe(v));
+      scan.thin_leg_beams.push_back(v.get<std::uint32_t>());
+    }
+  }
+  last_stamp_ = scan.stamp;
+  have_stamp_ = true;
+}
+
+}  // namespace scanfilter

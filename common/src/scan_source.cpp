@@ -1,0 +1,20 @@
+#include "scanfilter/scan_source.hpp"
+
+#include "scanfilter/carmen_log_reader.hpp"
+#include "scanfilter/line_reader.hpp"
+#include "scanfilter/scan_log_reader.hpp"
+
+namespace scanfilter {
+
+std::unique_ptr<ScanSource> openScanSource(const std::string& path, const ScanSourceOptions& options) {
+  // A scan log starts with a JSON object; anything else is read as CARMEN.
+  LineReader probe(path);
+  std::string first;
+  while (probe.next(first) && first.find_first_not_of(" \t") == std::string::npos) {
+  }
+  const auto start = first.find_first_not_of(" \t");
+  if (start != std::string::npos && first[start] == '{') return std::make_unique<ScanLogReader>(path);
+  return std::make_unique<CarmenLogReader>(path, options);
+}
+
+}  // namespace scanfilter

@@ -1,0 +1,43 @@
+#pragma once
+#include <cstdint>
+#include <string>
+
+namespace scanfilter::cli {
+
+struct SimulateOptions {
+  std::string scene = "hall";
+  std::uint64_t seed = 1;
+  std::string output;
+  int max_frames = 0;  // 0: the whole trajectory
+};
+
+struct ReplayOptions {
+  std::string input;
+  std::string output;  // empty: no log written
+  std::string config;  // empty: built-in defaults
+  bool reference = false;
+  std::string render;  // PNG path, empty: none
+  double carmen_range_max = 80.0;
+  bool quiet = false;
+};
+
+struct RenderOptionsCli {
+  std::string input;
+  std::string output;
+  std::string title;
+  int pixels = 800;
+  int first_frame = 0;
+  int frames = 0;  // 0: all
+};
+
+struct InfoOptions {
+  std::string input;
+  double carmen_range_max = 80.0;
+};
+
+int runSimulate(const SimulateOptions& options);
+int runReplay(const ReplayOptions& options);
+int runRender(const RenderOptionsCli& options);
+int runInfo(const InfoOptions& options);
+
+}  // namespace scanfilter::cli

@@ -1,0 +1,47 @@
+#include <cmath>
+#include <iostream>
+#include <numbers>
+
+#include "commands.hpp"
+#include "scanfilter/scan_source.hpp"
+
+namespace scanfilter::cli {
+
+int runInfo(const InfoOptions& options) {
+  ScanSourceOptions source_options;
+  source_options.carmen_range_max = options.carmen_range_max;
+  auto source = openScanSource(options.input, source_options);
+  const ScanLogHeader& h = source->header();
+  std::size_t scans = 0, beams = 0, returns = 0, labelled = 0, with_truth = 0;
+  double first = 0.0, last = 0.0, path = 0.0;
+  std::size_t min_beams = SIZE_MAX, max_beams = 0;
+  Pose2 previous;
+  ScanRecord record;
+  while (source->next(record)) {
+    const Scan& s = record.scan;
+    if (scans == 0) first = s.stamp;
+    else path += std::hypot(s.pose.x - previous.x, s.pose.y - previous.y);
+    last = s.stamp;
+    previous = s.pose;
+    ++scans;
+    beams += s.size();
+    min_beams = std::min(min_beams, s.size());
+    max_beams = std::max(max_beams, s.size());
+    for (std::size_t i = 0; i < s.size(); ++i) returns += s.hasReturn(i);
+    labelled += !s.labels.empty();
+    with_truth += !s.truth.empty();
+  }
+  std::cout << "file:      " << options.input << "\n"
+            << "source:    " << h.source << "\n"
+            << "sensor:    mount [" << h.sensor.mount.x << ", " << h.sensor.mount.y << ", " << h.sensor.mount.yaw
+            << "], " << (h.sensor.direction == BeamDirection::kCcw ? "ccw" : "cw") << ", range "
+            << h.sensor.range_min << "-" << h.sensor.range_max << " m, angular accuracy "
+            << h.sensor.angular_accuracy_deg << " deg\n"
+            << "scans:     " << scans << " (" << min_beams << "-" << max_beams << " beams)\n"
+            << "duration:  " << (last - first) << " s, path " << path << " m\n"
+            << "returns:   " << returns << " of " << beams << " beams\n"
+            << "truth:     " << with_truth << " scans, labels: " << labelled << " scans\n";
+  return 0;
+}
+
+}  // namespace scanfilter::cli

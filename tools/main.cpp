@@ -1,0 +1,68 @@
+// scanfilter: the command-line tool. CLI11 lives in this file only (it is
+// slow to compile); each subcommand's work is in its own *_command.cpp.
+#include <exception>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+#include <spdlog/spdlog.h>
+
+#include "commands.hpp"
+#include "scanfilter/input_error.hpp"
+
+using namespace scanfilter::cli;
+
+int main(int argc, char** argv) {
+  CLI::App app{"scanfilter: two-step filter for indoor 2D LiDAR scans (jump points, misdetected points)"};
+  app.set_version_flag("--version", std::string("scanfilter ") + SCANFILTER_VERSION);
+  app.require_subcommand(1);
+  std::string log_level = "warn";
+  app.add_option("--log-level", log_level, "trace, debug, info, warn, error or off")->capture_default_str();
+
+  SimulateOptions sim;
+  auto* simulate = app.add_subcommand("simulate", "Simulate a labelled scan log of a scene");
+  simulate->add_option("--scene", sim.scene, "built-in scene name (hall, home, office) or a scene YAML file")->capture_default_str();
+  simulate->add_option("--seed", sim.seed, "random seed: same scene and seed, same scans")->capture_default_str();
+  simulate->add_option("--max-frames", sim.max_frames, "stop after this many scans (0: whole trajectory)")->check(CLI::NonNegativeNumber);
+  simulate->add_option("-o,--output", sim.output, "output scan log (.scanlog.jsonl)")->required();
+
+  ReplayOptions replay;
+  auto* rep = app.add_subcommand("replay", "Run the two-step filter over a scan log or CARMEN log");
+  rep->add_option("input", replay.input, "scan log (.scanlog.jsonl) or CARMEN log (.log, .gz)")->required()->check(CLI::ExistingFile);
+  rep->add_option("-o,--output", replay.output, "write the input with `labels` added");
+  rep->add_option("--config", replay.config, "filter config YAML (default: built-in defaults, see config/filter.yaml)")->check(CLI::ExistingFile);
+  rep->add_flag("--reference", replay.reference, "use the literal reference implementations (slow)");
+  rep->add_option("--render", replay.render, "also write a before/after PNG of the whole log");
+  rep->add_option("--carmen-range-max", replay.carmen_range_max, "CARMEN logs: ranges at or above this are no return (m)")->capture_default_str();
+  rep->add_flag("-q,--quiet", replay.quiet, "print nothing but errors");
+
+  RenderOptionsCli render;
+  auto* ren = app.add_subcommand("render", "Draw a scan log as PNG: before/after, coloured by truth and labels");
+  ren->add_option("input", render.input, "scan log, with or without labels")->required()->check(CLI::ExistingFile);
+  ren->add_option("-o,--output", render.output, "PNG file")->required();
+  ren->add_option("--title", render.title, "title printed above the panels");
+  ren->add_option("--pixels", render.pixels, "size of each panel's longer side")->capture_default_str()->check(CLI::Range(100, 8000));
+  ren->add_option("--first-frame", render.first_frame, "first scan drawn (0-based)")->check(CLI::NonNegativeNumber);
+  ren->add_option("--frames", render.frames, "scans drawn (0: all from the first)")->check(CLI::NonNegativeNumber);
+
+  InfoOptions info;
+  auto* inf = app.add_subcommand("info", "Summarise a scan log or CARMEN log");
+  inf->add_option("input", info.input, "scan log or CARMEN log")->required()->check(CLI::ExistingFile);
+  inf->add_option("--carmen-range-max", info.carmen_range_max, "CARMEN logs: ranges at or above this are no return (m)")->capture_default_str();
+
+  CLI11_PARSE(app, argc, argv);
+  spdlog::set_level(spdlog::level::from_str(log_level));
+  spdlog::set_default_logger(spdlog::default_logger());
+  try {
+    if (*simulate) return runSimulate(sim);
+    if (*rep) return runReplay(replay);
+    if (*ren) return runRender(render);
+    if (*inf) return runInfo(info);
+  } catch (const scanfilter::InputError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,55 @@
+#include <chrono>
+#include <iostream>
+#include <optional>
+
+#include "commands.hpp"
+#include "score_report.hpp"
+#include "scanfilter/filter_config.hpp"
+#include "scanfilter/removal_score.hpp"
+#include "scanfilter/scan_log_writer.hpp"
+#include "scanfilter/scan_renderer.hpp"
+#include "scanfilter/two_step_filter.hpp"
+
+namespace scanfilter::cli {
+
+int runReplay(const ReplayOptions& options) {
+  ScanSourceOptions source_options;
+  source_options.carmen_range_max = options.carmen_range_max;
+  auto source = openScanSource(options.input, source_options);
+  const FilterConfig config = options.config.empty() ? FilterConfig{} : loadFilterConfig(options.config);
+  const SensorInfo& sensor = source->header().sensor;
+  TwoStepFilter filter(config.resolve(sensor), options.reference ? Implementation::kReference : Implementation::kFast);
+
+  std::optional<ScanLogWriter> writer;
+  if (!options.output.empty()) writer.emplace(options.output, source->header());
+  ScanRenderer renderer;
+  RemovalScore score;
+  ScanRecord record;
+  std::chrono::duration<double> filter_time{0};
+  while (source->next(record)) {
+    record.scan.labels.resize(record.scan.size());
+    const auto start = std::chrono::steady_clock::now();
+    filter.apply(record.scan, sensor, record.scan.labels);
+    filter_time += std::chrono::steady_clock::now() - start;
+    score.add(record.scan, record.scan.labels);
+    if (writer) writer->write(record);
+    if (!options.render.empty()) renderer.add(record.scan, sensor, record.scan.labels);
+  }
+  if (writer) writer->close();
+  if (!options.render.empty()) renderer.save(options.render, {.title = options.input});
+  if (options.quiet) return 0;
+
+  std::cout << "input: " << options.input << " (" << (options.reference ? "reference" : "fast")
+            << " implementation)\n";
+  printScoreReport(std::cout, score);
+  if (score.frames() > 0)
+    std::cout << "filter time: " << 1e3 * filter_time.count() / static_cast<double>(score.frames())
+              << " ms per scan\n";
+  if (filter.penetration().resetCount() > 0)
+    std::cout << "penetration cache resets on pose jumps: " << filter.penetration().resetCount() << "\n";
+  if (writer) std::cout << "labelled log: " << options.output << "\n";
+  if (!options.render.empty()) std::cout << "picture: " << options.render << "\n";
+  return 0;
+}
+
+}  // namespace scanfilter::cli

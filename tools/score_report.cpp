@@ -1,0 +1,34 @@
+#include "score_report.hpp"
+
+#include <iomanip>
+
+namespace scanfilter::cli {
+
+namespace {
+void printClass(std::ostream& out, const char* name, const RemovalClassScore& s) {
+  out << "  " << std::left << std::setw(13) << name << std::right << std::setw(9) << s.truth << std::setw(10)
+      << s.precision() << std::setw(10) << s.recall() << std::setw(10) << s.f1() << "\n";
+}
+}  // namespace
+
+void printScoreReport(std::ostream& out, const RemovalScore& score) {
+  out << std::fixed << std::setprecision(4);
+  out << "scans: " << score.frames() << "\n";
+  out << "labels:";
+  for (int c = 0; c < kPointCodeCount; ++c) {
+    const auto code = static_cast<PointCode>(c);
+    out << "  " << pointCodeName(code) << "=" << score.labelCount(code);
+  }
+  out << "\n";
+  if (!score.hasTruth()) return;
+  out << "removal vs truth:\n";
+  out << "  class            truth precision    recall        F1\n";
+  printClass(out, "jump", score.jump());
+  printClass(out, "misdetected", score.misdetected());
+  out << "  valid points falsely deleted: " << score.validDeleted() << " of " << score.validTruth() << " ("
+      << 100.0 * score.falseDeletionRate() << " %)\n";
+  out << "  thin-leg points kept:         " << score.thinLegKept() << " of " << score.thinLegTruth() << " ("
+      << 100.0 * score.thinLegRetention() << " %)\n";
+}
+
+}  // namespace scanfilter::cli
