@@ -6,6 +6,8 @@
 #include <numbers>
 #include <sstream>
 
+#include <spdlog/spdlog.h>
+
 #include "scanfilter/input_error.hpp"
 
 namespace scanfilter {
@@ -162,11 +164,10 @@ bool CarmenLogReader::next(ScanRecord& record) {
   if (tokens[0] == "FLASER") parseFlaser(tokens, record.scan);
   else parseRobotLaser(tokens, record.scan);
   if (record.scan.stamp < last_stamp_) {
-    std::ostringstream problem;
-    problem.precision(17);
-    problem << record.scan.stamp << " is earlier than the previous scan's " << last_stamp_
-            << "; stamps must not decrease";
-    fail("ipc_timestamp", problem.str());
+    if (stamp_regressions_++ == 0)
+      spdlog::warn("{}:{}: ipc_timestamp {} is earlier than the previous scan's {}; kept in file order "
+                   "(further regressions are counted, not logged)",
+                   lines_.path(), current_line_, record.scan.stamp, last_stamp_);
   }
   last_stamp_ = record.scan.stamp;
   return true;

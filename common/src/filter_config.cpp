@@ -17,8 +17,7 @@ namespace {
 class Section {
  public:
   Section(const YAML::Node& root, const std::string& key, const std::string& file)
-      : file_(file), path_(key) {
-    node_ = root[key];
+      : file_(file), path_(key), node_(root[key]) {  // init, not assign: yaml-cpp's = writes through
     if (node_ && !node_.IsMap()) fail(path_, node_, "expected a mapping");
   }
 
@@ -64,6 +63,10 @@ class Section {
     if (!(value >= lo && value <= hi)) fail(path_ + "." + key, node_[key], std::string("expected ") + expected);
   }
 
+  [[noreturn]] void failKey(const char* key, const std::string& problem) const {
+    fail(path_ + "." + key, node_[key], problem);
+  }
+
   void rejectUnknownKeys() {
     if (!node_) return;
     for (const auto& entry : node_) {
@@ -80,7 +83,7 @@ class Section {
  private:
   YAML::Node take(const char* key) {
     used_.insert(key);
-    return node_ ? node_[key] : YAML::Node();
+    return node_ ? node_[key] : YAML::Node(YAML::NodeType::Undefined);
   }
   static std::string scalar(const YAML::Node& v) { return v.IsScalar() ? v.Scalar() : "a non-scalar"; }
   template <typename T>
@@ -112,7 +115,7 @@ void readJump(Section& s, FilterConfig& config) {
   s.requireRange("theta_k_deg", p.theta_k_deg, 0.0, 89.9, "0 <= value < 90 (cos θK must stay positive)");
   s.requireRange("l_min", p.l_min, 0.0, 1e9, "a value >= 0");
   s.requireRange("l_max", p.l_max, 0.0, 1e9, "a value >= 0");
-  if (config.d_min && config.d_max && !(*config.d_max > *config.d_min)) s.requireRange("d_max", 0, 1, 0, "d_max > d_min");
+  if (config.d_min && config.d_max && !(*config.d_max > *config.d_min)) s.failKey("d_max", "expected d_max > d_min");
   s.rejectUnknownKeys();
 }
 
@@ -130,6 +133,9 @@ void readPenetration(Section& s, FilterConfig& config) {
   s.read("pose_jump_reset", p.pose_jump_reset);
   s.read("max_cache_frames", p.max_cache_frames);
   s.read("cache_misdetected_points", p.cache_misdetected_points);
+  s.read("rescue_persistent_points", p.rescue_persistent_points);
+  s.read("rescue_min_count", p.rescue_min_count);
+  s.read("rescue_radius_cells", p.rescue_radius_cells);
   s.requireRange("cell_size", p.cell_size, 1e-3, 10.0, "0.001 <= value <= 10 (m)");
   s.requireRange("frame_lifetime", p.frame_lifetime, 0.0, 1e9, "a value >= 0 (s)");
   s.requireRange("min_frames", p.min_frames, 1, 1e9, "an integer >= 1");
@@ -140,13 +146,8 @@ void readPenetration(Section& s, FilterConfig& config) {
   s.requireRange("behind_margin", p.behind_margin, 0.0, 1e9, "a value >= 0 (m)");
   s.requireRange("pose_jump_reset", p.pose_jump_reset, 0.0, 1e9, "a value > 0 (m)");
   s.requireRange("max_cache_frames", static_cast<double>(p.max_cache_frames), 1, 1e7, "an integer >= 1");
-  s.rejectUnknownKeys();
-}
-
-void readRescue(Section& s, FilterConfig& config) {
-  s.read("enabled", config.params.rescue.enabled);
-  s.read("min_count", config.params.rescue.min_count);
-  s.requireRange("min_count", config.params.rescue.min_count, 1, 1e9, "an integer >= 1");
+  s.requireRange("rescue_min_count", p.rescue_min_count, 1, 1e9, "an integer >= 1");
+  s.requireRange("rescue_radius_cells", p.rescue_radius_cells, 0, 10, "an integer 0-10");
   s.rejectUnknownKeys();
 }
 
@@ -162,19 +163,17 @@ FilterConfig parseFilterConfig(const std::string& yaml_text, const std::string& 
   FilterConfig config;
   if (!root || root.IsNull()) return config;
   if (!root.IsMap()) throw InputError(name, 1, "", "expected a mapping at the top level");
-  const std::set<std::string> sections = {"jump_filter", "penetration_filter", "persistence_rescue"};
+  const std::set<std::string> sections = {"jump_filter", "penetration_filter"};
   for (const auto& entry : root) {
     const auto key = entry.first.as<std::string>();
     if (!sections.count(key))
       throw InputError(name, static_cast<std::size_t>(entry.first.Mark().line) + 1, key,
-                       "unknown section; expected jump_filter, penetration_filter or persistence_rescue");
+                       "unknown section; expected jump_filter or penetration_filter");
   }
   Section jump(root, "jump_filter", name);
   readJump(jump, config);
   Section penetration(root, "penetration_filter", name);
   readPenetration(penetration, config);
-  Section rescue(root, "persistence_rescue", name);
-  readRescue(rescue, config);
   return config;
 }
 

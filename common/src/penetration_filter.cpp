@@ -11,11 +11,12 @@
 namespace scanfilter {
 
 PenetrationFilter::PenetrationFilter(const PenetrationFilterParams& params)
-    : params_(params), rule_(params), grid_(params.cell_size) {}
+    : params_(params), rule_(params), grid_(params.cell_size), evidence_(params.cell_size) {}
 
 void PenetrationFilter::reset() {
   cache_.clear();
   grid_.clear();
+  evidence_.clear();
   frames_seen_ = 0;
   last_origin_.reset();
 }
@@ -36,20 +37,29 @@ void PenetrationFilter::resetOnPoseJump(const Eigen::Vector2d& origin, double st
 void PenetrationFilter::expireFrames(double stamp) {
   while (!cache_.empty() && (stamp - cache_.front().stamp > params_.frame_lifetime ||
                              cache_.size() >= params_.max_cache_frames)) {
-    for (const auto& p : cache_.front().points) grid_.remove(p);
+    for (const auto& p : cache_.front().points) {
+      grid_.remove(p);
+      if (params_.rescue_persistent_points) evidence_.remove(p);
+    }
+    for (const auto& p : cache_.front().others) evidence_.remove(p);
     cache_.pop_front();
   }
 }
 
 void PenetrationFilter::cacheFrame(double stamp, std::span<const std::uint8_t> labels) {
-  CachedFrame frame{stamp, {}};
+  CachedFrame frame{stamp, {}, {}};
   for (std::size_t i = 0; i < labels.size(); ++i) {
     const auto code = static_cast<PointCode>(labels[i]);
+    if (code == PointCode::kNoReturn) continue;
     const bool votes = code == PointCode::kValid ||
                        (code == PointCode::kMisdetected && params_.cache_misdetected_points);
-    if (!votes) continue;
-    frame.points.push_back(points_[i]);
-    grid_.add(points_[i]);
+    if (votes) {
+      frame.points.push_back(points_[i]);
+      grid_.add(points_[i]);
+    } else if (params_.rescue_persistent_points) {
+      frame.others.push_back(points_[i]);
+    }
+    if (params_.rescue_persistent_points) evidence_.add(points_[i]);
   }
   cache_.push_back(std::move(frame));
 }
@@ -63,6 +73,7 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
   worldPoints(scan, sensor, points_);
 
   if (warmedUp()) {
+    if (params_.rescue_persistent_points) rescuePersistentPoints(labels);
     prepareJudging();
     for (std::size_t i = 0; i < labels.size(); ++i) {
       if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid)) continue;
@@ -71,6 +82,23 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
     }
   }
   cacheFrame(scan.stamp, labels);
+}
+
+int PenetrationFilter::evidenceAround(CellIndex c) const {
+  const int r = params_.rescue_radius_cells;
+  int sum = 0;
+  for (int dy = -r; dy <= r; ++dy)
+    for (int dx = -r; dx <= r; ++dx) sum += evidence_.count({c.x + dx, c.y + dy});
+  return sum;
+}
+
+void PenetrationFilter::rescuePersistentPoints(std::span<std::uint8_t> labels) {
+  // The evidence holds only earlier frames, so a point cannot vouch for itself.
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    if (labels[i] != static_cast<std::uint8_t>(PointCode::kJump)) continue;
+    if (evidenceAround(evidence_.cellOf(points_[i])) >= params_.rescue_min_count)
+      labels[i] = static_cast<std::uint8_t>(PointCode::kValid);
+  }
 }
 
 // --- Reference ---------------------------------------------------------------

@@ -1,7 +1,6 @@
 #include "scanfilter/two_step_filter.hpp"
 
 #include "scanfilter/point_code.hpp"
-#include "scanfilter/scan_geometry.hpp"
 
 namespace scanfilter {
 
@@ -19,20 +18,7 @@ void TwoStepFilter::apply(const Scan& scan, const SensorInfo& sensor,
       labels[i] = static_cast<std::uint8_t>(scan.hasReturn(i) ? PointCode::kValid
                                                                : PointCode::kNoReturn);
   }
-  if (params_.rescue.enabled) rescuePersistentPoints(scan, sensor, labels);
   if (params_.penetration_enabled) penetration_->apply(scan, sensor, labels);
-}
-
-void TwoStepFilter::rescuePersistentPoints(const Scan& scan, const SensorInfo& sensor,
-                                           std::span<std::uint8_t> labels) {
-  // The grid holds only frames before this one, so the evidence is independent.
-  if (!penetration_->warmedUp()) return;
-  const PenetrationGrid& grid = penetration_->grid();
-  for (std::size_t i = 0; i < scan.size(); ++i) {
-    if (labels[i] != static_cast<std::uint8_t>(PointCode::kJump)) continue;
-    if (grid.count(grid.cellOf(beamToWorld(scan, sensor, i))) >= params_.rescue.min_count)
-      labels[i] = static_cast<std::uint8_t>(PointCode::kValid);
-  }
 }
 
 }  // namespace scanfilter

@@ -24,6 +24,10 @@ class CarmenLogReader final : public ScanSource {
   const ScanLogHeader& header() const override { return header_; }
   bool next(ScanRecord& record) override;
 
+  // Scans whose stamp is earlier than the one before. Real logs have them
+  // (intel: line 5647); file order is kept as the sequence and they are counted.
+  std::size_t stampRegressions() const { return stamp_regressions_; }
+
  private:
   bool readScanLine(std::string& line);
   void parseFlaser(const std::vector<std::string>& tokens, Scan& scan) const;
@@ -39,6 +43,7 @@ class CarmenLogReader final : public ScanSource {
   std::size_t pending_line_ = 0;
   std::size_t current_line_ = 0;
   double last_stamp_ = -1.0;
+  std::size_t stamp_regressions_ = 0;
 };
 
 }  // namespace scanfilter

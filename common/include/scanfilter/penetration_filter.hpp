@@ -34,6 +34,7 @@ class PenetrationFilter {
   void reset();
 
   const PenetrationGrid& grid() const { return grid_; }
+  const PenetrationGrid& evidenceGrid() const { return evidence_; }
   const PenetrationFilterParams& params() const { return params_; }
   std::size_t framesSinceReset() const { return frames_seen_; }
   std::size_t cachedFrames() const { return cache_.size(); }
@@ -48,13 +49,17 @@ class PenetrationFilter {
 
   PenetrationFilterParams params_;
   PenetrationRule rule_;
-  PenetrationGrid grid_;
+  PenetrationGrid grid_;      // points the filter kept: the obstacle votes
+  PenetrationGrid evidence_;  // every return, kept or not: for the rescue
 
  private:
   struct CachedFrame {
     double stamp;
-    std::vector<Eigen::Vector2d> points;
+    std::vector<Eigen::Vector2d> points;  // vote in grid_
+    std::vector<Eigen::Vector2d> others;  // the other returns, in evidence_ only
   };
+  void rescuePersistentPoints(std::span<std::uint8_t> labels);
+  int evidenceAround(CellIndex c) const;
   void resetOnPoseJump(const Eigen::Vector2d& origin, double stamp);
   void expireFrames(double stamp);
   void cacheFrame(double stamp, std::span<const std::uint8_t> labels);

@@ -1,5 +1,6 @@
 #include "scanfilter/sim/ray_caster.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -67,6 +68,17 @@ std::optional<RayHit> RayCaster::cast(const Eigen::Vector2d& origin, const Eigen
     found = true;
   }
   if (!found) return std::nullopt;
+  return best;
+}
+
+double RayCaster::distanceToSurface(const Eigen::Vector2d& p) const {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Segment& seg : scene_.segments) {
+    const Eigen::Vector2d e = seg.b - seg.a;
+    const double t = std::clamp((p - seg.a).dot(e) / e.squaredNorm(), 0.0, 1.0);
+    best = std::min(best, (p - (seg.a + t * e)).norm());
+  }
+  for (const Leg& leg : scene_.legs) best = std::min(best, std::abs((p - leg.centre).norm() - leg.radius));
   return best;
 }
 

@@ -130,8 +130,13 @@ ScanSimulator::Beam ScanSimulator::simulateBeam(const Eigen::Vector2d& origin, d
   }
   range += sigma(truth_range) * normal_(rng_);
   range = std::round(range / m.range_resolution) * m.range_resolution;
-  if (displaced && std::abs(range - truth_range) > std::max(m.jump_min_error, kJumpSigmas * sigma(truth_range)))
-    truth = static_cast<std::uint8_t>(PointCode::kJump);
+  // A displaced return is a jump point when it lies on no surface at all: one
+  // that slid along its own wall (grazing) or onto another one is still valid.
+  if (displaced) {
+    const double off_surface = caster_.distanceToSurface(origin + range * dir);
+    if (off_surface > std::max(m.jump_min_error, kJumpSigmas * sigma(truth_range)))
+      truth = static_cast<std::uint8_t>(PointCode::kJump);
+  }
   if (range < sensor.range_min || range > sensor.range_max) return no_return;
   const bool thin = hit->is_leg && truth == static_cast<std::uint8_t>(PointCode::kValid);
   return {range, truth, thin};

@@ -24,6 +24,9 @@ class RayCaster {
   std::optional<RayHit> cast(const Eigen::Vector2d& origin, const Eigen::Vector2d& direction,
                              double max_range) const;
 
+  // Distance from p to the nearest surface (wall or leg) of the scene.
+  double distanceToSurface(const Eigen::Vector2d& p) const;
+
   // Distance from p to the nearest corner (where two walls meet at an angle).
   double distanceToCorner(const Eigen::Vector2d& p) const;
 

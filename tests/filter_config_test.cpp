@@ -1,0 +1,69 @@
+#include <gtest/gtest.h>
+
+#include "scanfilter/filter_config.hpp"
+#include "scanfilter/input_error.hpp"
+
+namespace scanfilter {
+namespace {
+
+std::string errorOf(const std::string& yaml) {
+  try {
+    parseFilterConfig(yaml, "f.yaml");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
+  const FilterConfig shipped = loadFilterConfig(SCANFILTER_SOURCE_DIR "/config/filter.yaml");
+  const TwoStepFilterParams d;
+  const auto& s = shipped.params;
+  EXPECT_EQ(s.jump.alpha, d.jump.alpha);
+  EXPECT_EQ(s.jump.theta_k_deg, d.jump.theta_k_deg);
+  EXPECT_EQ(s.jump.l_min, d.jump.l_min);
+  EXPECT_EQ(s.jump.l_max, d.jump.l_max);
+  EXPECT_EQ(s.penetration.cell_size, d.penetration.cell_size);
+  EXPECT_EQ(s.penetration.frame_lifetime, d.penetration.frame_lifetime);
+  EXPECT_EQ(s.penetration.min_frames, d.penetration.min_frames);
+  EXPECT_EQ(s.penetration.obstacle_threshold, d.penetration.obstacle_threshold);
+  EXPECT_EQ(s.penetration.corridor_half_width, d.penetration.corridor_half_width);
+  EXPECT_EQ(s.penetration.own_surface_margin, d.penetration.own_surface_margin);
+  EXPECT_EQ(s.penetration.own_surface_margin_per_m, d.penetration.own_surface_margin_per_m);
+  EXPECT_EQ(s.penetration.rescue_persistent_points, d.penetration.rescue_persistent_points);
+  EXPECT_EQ(s.penetration.rescue_min_count, d.penetration.rescue_min_count);
+  EXPECT_EQ(s.penetration.rescue_radius_cells, d.penetration.rescue_radius_cells);
+  EXPECT_FALSE(shipped.angular_accuracy_deg) << "auto: from the sensor";
+}
+
+TEST(FilterConfig, PaperLiteralPresetLoads) {
+  const FilterConfig paper = loadFilterConfig(SCANFILTER_SOURCE_DIR "/config/filter-paper-literal.yaml");
+  EXPECT_DOUBLE_EQ(paper.params.penetration.corridor_half_width, 0.1);
+  EXPECT_DOUBLE_EQ(paper.params.penetration.behind_margin, 0.1);
+  EXPECT_FALSE(paper.params.penetration.rescue_persistent_points);
+}
+
+TEST(FilterConfig, AutoValuesComeFromTheSensor) {
+  const FilterConfig c = parseFilterConfig("jump_filter:\n  d_max: auto\n  angular_accuracy_deg: 0.5\n", "f.yaml");
+  SensorInfo sensor;
+  sensor.range_min = 0.2;
+  sensor.range_max = 12.0;
+  sensor.angular_accuracy_deg = 1.0;
+  const TwoStepFilterParams p = c.resolve(sensor);
+  EXPECT_DOUBLE_EQ(p.jump.d_max, 12.0);
+  EXPECT_DOUBLE_EQ(p.jump.d_min, 0.2);
+  EXPECT_DOUBLE_EQ(p.jump.angular_accuracy_deg, 0.5);
+}
+
+TEST(FilterConfigErrors, NameFileLineAndKey) {
+  EXPECT_EQ(errorOf("jump_filter:\n  alpha: fast\n"), "f.yaml:2: jump_filter.alpha: expected a number, got \"fast\"");
+  EXPECT_EQ(errorOf("jump_filter:\n  alpah: 1\n"), "f.yaml:2: jump_filter.alpah: unknown key");
+  EXPECT_EQ(errorOf("jump_filter:\n  theta_k_deg: 90\n"),
+            "f.yaml:2: jump_filter.theta_k_deg: expected 0 <= value < 90 (cos θK must stay positive)");
+  EXPECT_EQ(errorOf("penetration_filter:\n  min_frames: 0\n"), "f.yaml:2: penetration_filter.min_frames: expected an integer >= 1");
+  EXPECT_EQ(errorOf("penetration:\n  x: 1\n"), "f.yaml:1: penetration: unknown section; expected jump_filter or penetration_filter");
+  EXPECT_EQ(errorOf("jump_filter: [1, 2\n").substr(0, 26), "f.yaml:2: malformed YAML: ");
+}
+
+}  // namespace
+}  // namespace scanfilter

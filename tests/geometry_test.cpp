@@ -1,0 +1,110 @@
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "scanfilter/scan_geometry.hpp"
+
+namespace scanfilter {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+Scan oneBeam(double angle, double range, Pose2 pose) {
+  Scan s;
+  s.pose = pose;
+  s.angle_min = angle;
+  s.angle_increment = 0.01;
+  s.ranges = {range};
+  return s;
+}
+
+TEST(Geometry, CcwSensorAtOriginPointsAlongBeam) {
+  SensorInfo sensor;
+  const Eigen::Vector2d p = beamToWorld(oneBeam(kPi / 2, 2.0, {}), sensor, 0);
+  EXPECT_NEAR(p.x(), 0.0, 1e-12);
+  EXPECT_NEAR(p.y(), 2.0, 1e-12);
+}
+
+TEST(Geometry, ClockwiseDirectionMirrorsTheBeamAngle) {
+  SensorInfo sensor;
+  sensor.direction = BeamDirection::kCw;
+  const Eigen::Vector2d p = beamToWorld(oneBeam(kPi / 2, 2.0, {}), sensor, 0);
+  EXPECT_NEAR(p.y(), -2.0, 1e-12);
+}
+
+TEST(Geometry, MountOffsetRotatesWithTheRobot) {
+  SensorInfo sensor;
+  sensor.mount = {0.1, 0.0, 0.0};
+  const Pose2 pose{1.0, 2.0, kPi / 2};
+  const Eigen::Vector2d origin = sensorOrigin(pose, sensor.mount);
+  EXPECT_NEAR(origin.x(), 1.0, 1e-12);
+  EXPECT_NEAR(origin.y(), 2.1, 1e-12);
+  // Beam angle 0 looks along the robot's heading (+y here).
+  const Eigen::Vector2d p = beamToWorld(oneBeam(0.0, 1.0, pose), sensor, 0);
+  EXPECT_NEAR(p.x(), 1.0, 1e-12);
+  EXPECT_NEAR(p.y(), 3.1, 1e-12);
+}
+
+TEST(Geometry, FormatFormulaOnEveryBeam) {
+  SensorInfo sensor;
+  sensor.mount = {0.2, -0.1, 0.3};
+  sensor.direction = BeamDirection::kCw;
+  Scan s;
+  s.pose = {-1.0, 0.5, 2.0};
+  s.angle_min = -1.0;
+  s.angle_increment = 0.25;
+  s.ranges = {1.0, 2.0, 3.0, 4.0};
+  std::vector<Eigen::Vector2d> world;
+  worldPoints(s, sensor, world);
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const double ox = s.pose.x + std::cos(s.pose.theta) * 0.2 - std::sin(s.pose.theta) * -0.1;
+    const double oy = s.pose.y + std::sin(s.pose.theta) * 0.2 + std::cos(s.pose.theta) * -0.1;
+    const double phi = s.pose.theta + 0.3 - (s.angle_min + i * s.angle_increment);
+    EXPECT_NEAR(world[i].x(), ox + s.ranges[i] * std::cos(phi), 1e-12);
+    EXPECT_NEAR(world[i].y(), oy + s.ranges[i] * std::sin(phi), 1e-12);
+    EXPECT_NEAR((world[i] - beamToWorld(s, sensor, i)).norm(), 0.0, 1e-12);
+  }
+}
+
+// The paper's robot: sensor C behind the centre, θc = 180°, angles clockwise,
+// is mount [-C, 0, π] with direction cw (algorithm-notes.md).
+TEST(Geometry, PaperEquation4IsTheSpecialCase) {
+  const double c = 0.05;
+  SensorInfo sensor;
+  sensor.mount = {-c, 0.0, kPi};
+  sensor.direction = BeamDirection::kCw;
+  for (double theta0 : {0.0, 0.7, -2.5}) {
+    for (double theta_p : {0.0, 0.4, 3.0, 5.5}) {
+      const Pose2 robot{1.5, -0.5, theta0};
+      const Eigen::Vector2d expected = paperEquation4(robot, c, kPi, theta_p, 2.5);
+      const Eigen::Vector2d got = beamToWorld(oneBeam(theta_p, 2.5, robot), sensor, 0);
+      EXPECT_NEAR((got - expected).norm(), 0.0, 1e-12) << "theta0 " << theta0 << " theta_p " << theta_p;
+    }
+  }
+  // Beam 0 of the paper's sensor looks backwards from the robot.
+  const Eigen::Vector2d back = paperEquation4({0, 0, 0}, c, kPi, 0.0, 1.0);
+  EXPECT_NEAR(back.x(), -1.05, 1e-12);
+}
+
+TEST(Geometry, NoReturnBeamsGiveNaNPoints) {
+  Scan s = oneBeam(0.0, std::nan(""), {});
+  std::vector<Eigen::Vector2d> world;
+  worldPoints(s, SensorInfo{}, world);
+  EXPECT_TRUE(std::isnan(world[0].x()));
+}
+
+TEST(Geometry, FullTurnDetection) {
+  Scan s;
+  s.angle_increment = 2 * kPi / 360;
+  s.ranges.assign(360, 1.0);
+  EXPECT_TRUE(isFullTurn(s));
+  s.ranges.assign(359, 1.0);
+  EXPECT_FALSE(isFullTurn(s));
+  s.angle_increment = -2 * kPi / 360;
+  s.ranges.assign(360, 1.0);
+  EXPECT_TRUE(isFullTurn(s));
+}
+
+}  // namespace
+}  // namespace scanfilter

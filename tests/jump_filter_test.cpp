@@ -1,0 +1,155 @@
+#include <algorithm>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "scan_builder.hpp"
+#include "scanfilter/jump_filter.hpp"
+#include "scanfilter/point_code.hpp"
+
+namespace scanfilter {
+namespace {
+
+using test::castScan;
+using test::kDeg;
+using test::World;
+
+std::vector<std::uint8_t> label(const Scan& scan, const SensorInfo& sensor,
+                                const JumpFilterParams& params = JumpFilterParams{}) {
+  std::vector<std::uint8_t> out(scan.size());
+  for (auto impl : {Implementation::kReference, Implementation::kFast}) {
+    std::vector<std::uint8_t> labels(scan.size());
+    makeJumpFilter(params, impl)->apply(scan, sensor, labels);
+    if (impl == Implementation::kReference) out = labels;
+    else EXPECT_EQ(labels, out) << "fast and reference disagree";
+  }
+  return out;
+}
+
+std::size_t countCode(const std::vector<std::uint8_t>& labels, PointCode code) {
+  return static_cast<std::size_t>(std::count(labels.begin(), labels.end(), static_cast<std::uint8_t>(code)));
+}
+
+TEST(JumpFilter, StraightWallKeepsEveryPoint) {
+  const SensorInfo sensor = test::simpleSensor();
+  const Scan scan = castScan(World{}.wall({2, -3}, {2, 3}), {}, sensor);
+  const auto labels = label(scan, sensor);
+  EXPECT_GT(countCode(labels, PointCode::kValid), 100u);
+  EXPECT_EQ(countCode(labels, PointCode::kJump), 0u);
+}
+
+TEST(JumpFilter, NoReturnBeamsAreLabelledNoReturn) {
+  const SensorInfo sensor = test::simpleSensor();
+  const Scan scan = castScan(World{}.wall({2, -3}, {2, 3}), {}, sensor);
+  const auto labels = label(scan, sensor);
+  for (std::size_t i = 0; i < scan.size(); ++i)
+    EXPECT_EQ(labels[i] == static_cast<std::uint8_t>(PointCode::kNoReturn), !scan.hasReturn(i));
+}
+
+TEST(JumpFilter, MixedReturnTrailBetweenEdgeAndWallIsRemoved) {
+  // A box edge at 1.5 m in front of a wall at 4 m; the three beams past the
+  // edge return ranges between the two: the mixed-pixel trail.
+  const SensorInfo sensor = test::simpleSensor();
+  // The robot faces -1 rad so the edge is far from the scan's seam at beam 0.
+  Scan scan = castScan(World{}.wall({1.5, -1.5}, {1.5, 0.0}).wall({4, -4}, {4, 4}), {0, 0, -1.0}, sensor);
+  const std::size_t edge = test::beamTowards(scan, sensor, 0.0);
+  ASSERT_NEAR(scan.ranges[edge - 1], 1.5, 0.01);
+  const std::size_t trail[] = {edge + 1, edge + 2, edge + 3};
+  scan.ranges[trail[0]] = 2.1;
+  scan.ranges[trail[1]] = 2.8;
+  scan.ranges[trail[2]] = 3.5;
+  const auto labels = label(scan, sensor);
+  for (std::size_t i : trail) EXPECT_EQ(labels[i], static_cast<std::uint8_t>(PointCode::kJump)) << "beam " << i;
+  EXPECT_EQ(countCode(labels, PointCode::kJump), 3u);
+}
+
+TEST(JumpFilter, TwoPointTrailIsRemoved) {
+  const SensorInfo sensor = test::simpleSensor();
+  Scan scan = castScan(World{}.wall({1.0, -1.0}, {1.0, 0.0}).wall({3, -4}, {3, 4}), {0, 0, -1.0}, sensor);
+  const std::size_t edge = test::beamTowards(scan, sensor, 0.0);
+  scan.ranges[edge + 1] = 1.6;
+  scan.ranges[edge + 2] = 2.3;
+  const auto labels = label(scan, sensor);
+  EXPECT_EQ(labels[edge + 1], static_cast<std::uint8_t>(PointCode::kJump));
+  EXPECT_EQ(labels[edge + 2], static_cast<std::uint8_t>(PointCode::kJump));
+}
+
+TEST(JumpFilter, SparseWallAtFiveAndAHalfMetresIsKept) {
+  // At 5.5 m neighbouring returns are 9.6 cm apart; with ±3 cm of noise the
+  // range-scaled radius of eq. 5 must still join them.
+  const SensorInfo sensor = test::simpleSensor();
+  Scan scan = castScan(World{}.wall({5.5, -1.5}, {5.5, 1.5}), {}, sensor);
+  for (std::size_t i = 0; i < scan.size(); ++i)
+    if (scan.hasReturn(i)) scan.ranges[i] += (i % 2 ? 0.03 : -0.03);
+  const auto labels = label(scan, sensor);
+  EXPECT_GT(countCode(labels, PointCode::kValid), 25u);
+  EXPECT_EQ(countCode(labels, PointCode::kJump), 0u);
+}
+
+TEST(JumpFilter, ThinLegAtOneMetreIsKept) {
+  // A 3 cm leg at 1 m spans 1.7°: two beams. Its cluster's span passes eq. 7.
+  const SensorInfo sensor = test::simpleSensor();
+  const Scan scan = castScan(World{}.leg({1.0, 0.5 * kDeg}, 0.015).wall({4, -4}, {4, 4}), {}, sensor);
+  const auto labels = label(scan, sensor);
+  std::size_t leg_beams = 0;
+  for (std::size_t i = 0; i < scan.size(); ++i) {
+    if (scan.hasReturn(i) && scan.ranges[i] < 1.1) {
+      ++leg_beams;
+      EXPECT_EQ(labels[i], static_cast<std::uint8_t>(PointCode::kValid)) << "leg beam " << i;
+    }
+  }
+  EXPECT_EQ(leg_beams, 2u);
+}
+
+TEST(JumpFilter, SingleIsolatedReturnIsRemoved) {
+  const SensorInfo sensor = test::simpleSensor();
+  Scan scan = castScan(World{}.wall({4, -4}, {4, 4}), {}, sensor);
+  const std::size_t i = test::beamTowards(scan, sensor, 0.0);
+  scan.ranges[i] = 2.0;  // a lone point in free space
+  const auto labels = label(scan, sensor);
+  EXPECT_EQ(labels[i], static_cast<std::uint8_t>(PointCode::kJump));
+  EXPECT_EQ(countCode(labels, PointCode::kJump), 1u);
+}
+
+TEST(JumpFilter, ClusterAcrossTheSeamIsOneCluster) {
+  // A short wall straddling beam 0 of a full-turn scan: its beams sit at both
+  // ends of the index range. Its span must wrap, not cover the whole turn,
+  // and it must be judged as one cluster.
+  const SensorInfo sensor = test::simpleSensor();
+  Scan scan = castScan(World{}.wall({2.0, -0.035}, {2.0, 0.035}), {}, sensor);
+  ASSERT_TRUE(scan.hasReturn(0));
+  ASSERT_TRUE(scan.hasReturn(scan.size() - 1));
+  const auto labels = label(scan, sensor);
+  // Two beams spanning 1° at 2 m: span 1° against θ_th; both get one verdict.
+  EXPECT_EQ(labels[0], labels[scan.size() - 1]);
+  EXPECT_EQ(JumpClusterRule::spanInBeams(std::vector<std::uint32_t>{0, 359}, 360, true), 1u);
+  EXPECT_EQ(JumpClusterRule::spanInBeams(std::vector<std::uint32_t>{0, 359}, 360, false), 359u);
+  EXPECT_EQ(JumpClusterRule::spanInBeams(std::vector<std::uint32_t>{0, 120, 240}, 360, true), 240u);
+}
+
+TEST(JumpClusterRule, Equation5ScalesWithRange) {
+  JumpFilterParams p;
+  p.angular_accuracy_deg = 1.0;
+  p.alpha = 2.0;
+  p.theta_k_deg = 60.0;
+  const JumpClusterRule rule(p);
+  const double expected = 2.0 * 3.0 * std::sin(kDeg) * 2.0 / std::cos(60.0 * kDeg);
+  EXPECT_NEAR(rule.neighbourRadius(3.0), expected, 1e-12);
+}
+
+TEST(JumpClusterRule, Equation7InterpolatesTheMinimumLength) {
+  JumpFilterParams p;
+  p.l_min = 0.02;
+  p.l_max = 0.10;
+  p.d_min = 0.0;
+  p.d_max = 4.0;
+  const JumpClusterRule rule(p);
+  EXPECT_NEAR(rule.spanThreshold(2.0, 2.0), 2.0 * std::atan(0.06 / 4.0), 1e-12);
+  EXPECT_NEAR(rule.spanThreshold(8.0, 8.0), 2.0 * std::atan(0.10 / 16.0), 1e-12);  // clamped at l_max
+  p.span_range = SpanRange::kSeed;
+  const JumpClusterRule seed_rule(p);
+  EXPECT_NEAR(seed_rule.spanThreshold(2.0, 0.0), 2.0 * std::atan(0.02 / 4.0), 1e-12);
+}
+
+}  // namespace
+}  // namespace scanfilter

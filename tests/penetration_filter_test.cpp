@@ -1,0 +1,180 @@
+#include <algorithm>
+
+#include <gtest/gtest.h>
+
+#include "scan_builder.hpp"
+#include "scanfilter/penetration_filter.hpp"
+#include "scanfilter/point_code.hpp"
+
+namespace scanfilter {
+namespace {
+
+using test::castScan;
+using test::World;
+
+constexpr auto kValid = static_cast<std::uint8_t>(PointCode::kValid);
+constexpr auto kMisdetected = static_cast<std::uint8_t>(PointCode::kMisdetected);
+
+// Runs both implementations side by side and checks they agree on every frame.
+class BothFilters {
+ public:
+  explicit BothFilters(const PenetrationFilterParams& p)
+      : reference_(makePenetrationFilter(p, Implementation::kReference)),
+        fast_(makePenetrationFilter(p, Implementation::kFast)) {}
+
+  std::vector<std::uint8_t> apply(const Scan& scan, const SensorInfo& sensor) {
+    std::vector<std::uint8_t> ref(scan.size()), fast(scan.size());
+    for (std::size_t i = 0; i < scan.size(); ++i)
+      ref[i] = fast[i] = scan.hasReturn(i) ? kValid : static_cast<std::uint8_t>(PointCode::kNoReturn);
+    reference_->apply(scan, sensor, ref);
+    fast_->apply(scan, sensor, fast);
+    EXPECT_EQ(ref, fast) << "fast and reference disagree at stamp " << scan.stamp;
+    return fast;
+  }
+  const PenetrationFilter& fast() const { return *fast_; }
+
+ private:
+  std::unique_ptr<PenetrationFilter> reference_, fast_;
+};
+
+const World kRoom = World{}.wall({3, -3}, {3, 3}).wall({-3, -3}, {3, -3}).wall({-3, 3}, {3, 3}).wall({-3, -3}, {-3, 3});
+
+// Feeds `frames` scans of the room from slightly different poses.
+void warmUp(BothFilters& filters, const SensorInfo& sensor, int frames) {
+  for (int k = 0; k < frames; ++k)
+    filters.apply(castScan(kRoom, {0.02 * k, 0.0, 0.0}, sensor, 360, 0.1 * k), sensor);
+}
+
+TEST(PenetrationFilter, WarmUpKeepsEverything) {
+  const SensorInfo sensor = test::simpleSensor();
+  PenetrationFilterParams p;
+  p.min_frames = 5;
+  BothFilters filters(p);
+  for (int k = 0; k < 4; ++k) {
+    Scan scan = castScan(kRoom, {}, sensor, 360, 0.1 * k);
+    scan.ranges[10] = 5.0;  // even a point far behind the wall is kept while warming up
+    const auto labels = filters.apply(scan, sensor);
+    EXPECT_EQ(std::count(labels.begin(), labels.end(), kMisdetected), 0);
+  }
+  EXPECT_FALSE(filters.fast().warmedUp());
+}
+
+TEST(PenetrationFilter, KnownWallsAreKept) {
+  const SensorInfo sensor = test::simpleSensor();
+  BothFilters filters(PenetrationFilterParams{});
+  warmUp(filters, sensor, 10);
+  const auto labels = filters.apply(castScan(kRoom, {0.25, 0.1, 0.0}, sensor, 360, 1.0), sensor);
+  EXPECT_EQ(std::count(labels.begin(), labels.end(), kMisdetected), 0);
+}
+
+TEST(PenetrationFilter, GhostBehindKnownWallIsRemoved) {
+  const SensorInfo sensor = test::simpleSensor();
+  BothFilters filters(PenetrationFilterParams{});
+  warmUp(filters, sensor, 10);
+  Scan scan = castScan(kRoom, {0.2, 0.0, 0.0}, sensor, 360, 1.0);
+  const std::size_t ghost = test::beamTowards(scan, sensor, 0.3);
+  scan.ranges[ghost] += 0.8;  // a mirror image 0.8 m behind the wall
+  const auto labels = filters.apply(scan, sensor);
+  EXPECT_EQ(labels[ghost], kMisdetected);
+  EXPECT_EQ(std::count(labels.begin(), labels.end(), kMisdetected), 1);
+}
+
+TEST(PenetrationFilter, NewObjectInFrontOfKnownWallIsKept) {
+  const SensorInfo sensor = test::simpleSensor();
+  BothFilters filters(PenetrationFilterParams{});
+  warmUp(filters, sensor, 10);
+  World with_box = kRoom;
+  with_box.wall({1.5, -0.3}, {1.5, 0.3});  // a box face appears in front of the wall at x = 3
+  const auto labels = filters.apply(castScan(with_box, {0.2, 0.0, 0.0}, sensor, 360, 1.0), sensor);
+  EXPECT_EQ(std::count(labels.begin(), labels.end(), kMisdetected), 0);
+}
+
+TEST(PenetrationFilter, OldFramesExpireAfterTMax) {
+  const SensorInfo sensor = test::simpleSensor();
+  PenetrationFilterParams p;
+  p.frame_lifetime = 0.5;
+  BothFilters filters(p);
+  warmUp(filters, sensor, 10);  // stamps 0 .. 0.9
+  EXPECT_LE(filters.fast().cachedFrames(), 6u);
+  // Much later, the wall's votes have expired: a point behind it stands.
+  Scan later = castScan(kRoom, {0.18, 0.0, 0.0}, sensor, 360, 100.0);
+  const std::size_t i = test::beamTowards(later, sensor, 0.0);
+  later.ranges[i] += 0.8;
+  const auto labels = filters.apply(later, sensor);
+  EXPECT_EQ(labels[i], kValid);
+}
+
+TEST(PenetrationFilter, PoseJumpResetsTheCache) {
+  const SensorInfo sensor = test::simpleSensor();
+  BothFilters filters(PenetrationFilterParams{});
+  warmUp(filters, sensor, 10);
+  ASSERT_TRUE(filters.fast().warmedUp());
+  filters.apply(castScan(kRoom, {1.5, 1.0, 0.0}, sensor, 360, 1.0), sensor);  // 1.3 m jump
+  EXPECT_EQ(filters.fast().resetCount(), 1u);
+  EXPECT_EQ(filters.fast().framesSinceReset(), 1u);
+  EXPECT_FALSE(filters.fast().warmedUp());
+}
+
+TEST(PenetrationFilter, RescueRestoresPersistentJumpPoints) {
+  const SensorInfo sensor = test::simpleSensor();
+  PenetrationFilterParams p;
+  p.rescue_persistent_points = true;
+  auto filter = makePenetrationFilter(p, Implementation::kFast);
+  const World legs = World{kRoom}.leg({1.0, 0.0}, 0.015);
+  std::vector<std::uint8_t> labels;
+  for (int k = 0; k < 8; ++k) {
+    const Scan scan = castScan(legs, {-0.01 * k, 0.0, 0.0}, sensor, 360, 0.1 * k);
+    labels.assign(scan.size(), kValid);
+    for (std::size_t i = 0; i < scan.size(); ++i) {
+      if (!scan.hasReturn(i)) labels[i] = static_cast<std::uint8_t>(PointCode::kNoReturn);
+      else if (scan.ranges[i] < 1.1) labels[i] = static_cast<std::uint8_t>(PointCode::kJump);  // as step 1 says
+    }
+    filter->apply(scan, sensor, labels);
+  }
+  const Scan last = castScan(legs, {-0.07, 0.0, 0.0}, sensor, 360, 0.7);
+  const std::size_t leg = test::beamTowards(last, sensor, 0.0);
+  ASSERT_LT(last.ranges[leg], 1.1);
+  EXPECT_EQ(labels[leg], kValid) << "the leg, seen in every frame, is restored";
+}
+
+TEST(PenetrationGrid, CountsAddAndRemove) {
+  PenetrationGrid grid(0.05);
+  const Eigen::Vector2d p(-0.01, 1.234);
+  grid.add(p);
+  grid.add(p);
+  EXPECT_EQ(grid.count(grid.cellOf(p)), 2);
+  EXPECT_EQ(grid.cellOf(p).x, -1);
+  grid.remove(p);
+  grid.remove(p);
+  EXPECT_EQ(grid.count(grid.cellOf(p)), 0);
+  EXPECT_EQ(grid.tileCount(), 0u) << "an empty tile is freed";
+}
+
+TEST(PenetrationRule, LiteralStepsBtoE) {
+  PenetrationFilterParams p;
+  p.corridor_half_width = 0.1;
+  p.own_surface_margin = 0.0;
+  p.own_surface_margin_per_m = 0.0;
+  p.behind_margin = 0.1;
+  const PenetrationRule rule(p);
+  const Eigen::Vector2d r(0, 0), point(2, 0);
+  const double own = rule.ownMarginSq(2.0);
+  EXPECT_FALSE(rule.penetrates(r, point, {-1, 0}, own)) << "(b) behind the sensor";
+  EXPECT_FALSE(rule.penetrates(r, point, {1, 0.2}, own)) << "(c) off the beam";
+  EXPECT_TRUE(rule.penetrates(r, point, {1, 0.05}, own)) << "(d) crossed on the way";
+  EXPECT_TRUE(rule.penetrates(r, point, {2.05, 0}, own)) << "(e) just beyond p";
+  EXPECT_FALSE(rule.penetrates(r, point, {2.5, 0}, own)) << "beyond p, farther than the margin";
+}
+
+TEST(PenetrationRule, OwnSurfaceMarginProtectsThePointsWall) {
+  PenetrationFilterParams p;
+  p.own_surface_margin = 0.15;
+  p.own_surface_margin_per_m = 0.0;
+  const PenetrationRule rule(p);
+  const Eigen::Vector2d r(0, 0), point(2, 0);
+  EXPECT_FALSE(rule.penetrates(r, point, {1.9, 0.0}, rule.ownMarginSq(2.0)));
+  EXPECT_TRUE(rule.penetrates(r, point, {1.8, 0.0}, rule.ownMarginSq(2.0)));
+}
+
+}  // namespace
+}  // namespace scanfilter

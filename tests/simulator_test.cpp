@@ -1,0 +1,82 @@
+#include <gtest/gtest.h>
+
+#include "scanfilter/input_error.hpp"
+#include "scanfilter/point_code.hpp"
+#include "scanfilter/scan_geometry.hpp"
+#include "scanfilter/sim/scan_simulator.hpp"
+
+namespace scanfilter {
+namespace {
+
+TEST(Simulator, BuiltInScenesLoad) {
+  const auto names = sim::builtinSceneNames();
+  EXPECT_GE(names.size(), 3u);
+  for (const auto& name : names) {
+    const sim::Scene scene = sim::findScene(name);
+    EXPECT_FALSE(scene.segments.empty()) << name;
+    EXPECT_GE(scene.trajectory.waypoints.size(), 2u) << name;
+  }
+}
+
+TEST(Simulator, SameSeedSameScans) {
+  sim::ScanSimulator a(sim::findScene("hall"), 5), b(sim::findScene("hall"), 5), c(sim::findScene("hall"), 6);
+  ScanRecord ra, rb, rc;
+  bool differs = false;
+  for (int k = 0; k < 20; ++k) {
+    ASSERT_TRUE(a.next(ra) && b.next(rb) && c.next(rc));
+    for (std::size_t i = 0; i < ra.scan.size(); ++i) {
+      EXPECT_TRUE(ra.scan.ranges[i] == rb.scan.ranges[i] || (std::isnan(ra.scan.ranges[i]) && std::isnan(rb.scan.ranges[i])));
+      differs |= !(ra.scan.ranges[i] == rc.scan.ranges[i]);
+    }
+    EXPECT_EQ(ra.scan.truth, rb.scan.truth);
+  }
+  EXPECT_TRUE(differs) << "another seed gives other noise";
+}
+
+TEST(Simulator, ProducesEveryKindOfPoint) {
+  sim::ScanSimulator simulator(sim::findScene("office"), 1);
+  std::array<std::size_t, kPointCodeCount> counts{};
+  std::size_t thin = 0;
+  ScanRecord r;
+  for (int k = 0; k < 200 && simulator.next(r); ++k) {
+    for (std::size_t i = 0; i < r.scan.size(); ++i) {
+      ++counts[r.scan.truth[i]];
+      EXPECT_EQ(r.scan.truth[i] == static_cast<std::uint8_t>(PointCode::kNoReturn), !r.scan.hasReturn(i));
+    }
+    thin += r.scan.thin_leg_beams.size();
+  }
+  for (int c = 0; c < kPointCodeCount; ++c) EXPECT_GT(counts[static_cast<std::size_t>(c)], 0u) << pointCodeName(static_cast<PointCode>(c));
+  EXPECT_GT(thin, 0u);
+}
+
+// Ghosts lie behind the surface the beam hit: farther than the truth range.
+TEST(Simulator, MisdetectionsLieBehindTheSmoothWall) {
+  sim::ScanSimulator simulator(sim::findScene("hall"), 3);
+  const sim::Scene& scene = simulator.scene();
+  ScanRecord r;
+  std::size_t behind = 0, total = 0;
+  while (simulator.next(r)) {
+    for (std::size_t i = 0; i < r.scan.size(); ++i) {
+      if (r.scan.truth[i] != static_cast<std::uint8_t>(PointCode::kMisdetected)) continue;
+      ++total;
+      const Eigen::Vector2d p = beamToWorld(r.scan, scene.sensor, i);
+      // The hall is 8 x 10 m: a ghost behind a wall is outside, or behind the fridge.
+      behind += p.x() < 0 || p.x() > 8 || p.y() < 0 || p.y() > 10 || (p.x() > 7.15 && p.y() > 9.15);
+    }
+  }
+  EXPECT_GT(total, 100u);
+  EXPECT_GT(static_cast<double>(behind) / static_cast<double>(total), 0.9);
+}
+
+TEST(SimulatorErrors, BadSceneNamesFileLineAndKey) {
+  try {
+    sim::parseScene("walls:\n  - {points: [[0, 0], [1, 0]], material: velvet}\ntrajectory: {waypoints: [[0,0],[1,1]]}\n", "s.yaml");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "s.yaml:2: walls[0].material: expected rough, smooth or glass, got \"velvet\"");
+  }
+  EXPECT_THROW(sim::findScene("no-such-scene"), InputError);
+}
+
+}  // namespace
+}  // namespace scanfilter
