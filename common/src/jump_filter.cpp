@@ -10,7 +10,7 @@ namespace scanfilter {
 
 void JumpFilter::apply(const Scan& scan, const SensorInfo& sensor, std::span<std::uint8_t> labels) {
   const std::size_t n = scan.size();
-  sensorFramePoints(scan, sensor, points_);
+  sensorFramePoints(scan, sensor, directions_, points_);
   full_turn_ = isFullTurn(scan);
   free_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {

@@ -11,7 +11,10 @@
 namespace scanfilter {
 
 PenetrationFilter::PenetrationFilter(const PenetrationFilterParams& params)
-    : params_(params), rule_(params), grid_(params.cell_size), evidence_(params.cell_size) {}
+    : params_(params),
+      rule_(params),
+      grid_(params.cell_size, params.obstacle_threshold),
+      evidence_(params.cell_size) {}
 
 void PenetrationFilter::reset() {
   cache_.clear();
@@ -66,22 +69,28 @@ void PenetrationFilter::cacheFrame(double stamp, std::span<const std::uint8_t> l
 
 void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
                               std::span<std::uint8_t> labels) {
-  const Eigen::Vector2d origin = sensorOrigin(scan.pose, sensor.mount);
-  resetOnPoseJump(origin, scan.stamp);
+  resetOnPoseJump(sensorOrigin(scan.pose, sensor.mount), scan.stamp);
   ++frames_seen_;
   expireFrames(scan.stamp);
-  worldPoints(scan, sensor, points_);
-
   if (warmedUp()) {
-    if (params_.rescue_persistent_points) rescuePersistentPoints(labels);
-    prepareJudging();
-    for (std::size_t i = 0; i < labels.size(); ++i) {
-      if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid)) continue;
-      if (isMisdetected(origin, points_[i]))
-        labels[i] = static_cast<std::uint8_t>(PointCode::kMisdetected);
-    }
+    judge(scan, sensor, labels);
+  } else {
+    worldPoints(scan, sensor, directions_, points_);
   }
   cacheFrame(scan.stamp, labels);
+}
+
+void PenetrationFilter::judge(const Scan& scan, const SensorInfo& sensor,
+                              std::span<std::uint8_t> labels) {
+  const Eigen::Vector2d origin = sensorOrigin(scan.pose, sensor.mount);
+  worldPoints(scan, sensor, directions_, points_);
+  if (params_.rescue_persistent_points) rescuePersistentPoints(labels);
+  prepareJudging(origin);
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid)) continue;
+    if (isMisdetected(origin, points_[i]))
+      labels[i] = static_cast<std::uint8_t>(PointCode::kMisdetected);
+  }
 }
 
 int PenetrationFilter::evidenceAround(CellIndex c) const {
@@ -103,7 +112,7 @@ void PenetrationFilter::rescuePersistentPoints(std::span<std::uint8_t> labels) {
 
 // --- Reference ---------------------------------------------------------------
 
-void ReferencePenetrationFilter::prepareJudging() {
+void ReferencePenetrationFilter::prepareJudging(const Eigen::Vector2d& /*origin*/) {
   // Step 6: cells counting more than obs_th points are the obstacle set Q.
   obstacles_.clear();
   grid_.forEachCellAbove(params_.obstacle_threshold,
@@ -120,36 +129,19 @@ bool ReferencePenetrationFilter::isMisdetected(const Eigen::Vector2d& r,
 
 // --- Fast ----------------------------------------------------------------------
 
-namespace {
-
-// Cells whose centre can lie within `half_width` of the segment a-b, visited
-// column by column along the segment's dominant axis. `axis` 0 walks x.
-template <typename Visit>
-bool visitThickRay(const PenetrationGrid& grid, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
-                   double half_width, int axis, Visit&& visit) {
-  const int other = 1 - axis;
-  const double w = grid.cellSize();
-  const Eigen::Vector2d d = b - a;
-  const double slope = d[other] / d[axis];
-  // A centre within half_width of the line sits within half_width / |cos| of
-  // it along the other axis; one cell of margin absorbs rounding.
-  const double band = half_width * std::sqrt(1.0 + slope * slope) + w;
-  const auto lo = static_cast<std::int32_t>(std::floor((std::min(a[axis], b[axis]) - half_width) / w));
-  const auto hi = static_cast<std::int32_t>(std::floor((std::max(a[axis], b[axis]) + half_width) / w));
-  for (std::int32_t i = lo; i <= hi; ++i) {
-    const double centre = (i + 0.5) * w;
-    const double line = a[other] + (centre - a[axis]) * slope;
-    const auto j_lo = static_cast<std::int32_t>(std::floor((line - band) / w));
-    const auto j_hi = static_cast<std::int32_t>(std::floor((line + band) / w));
-    for (std::int32_t j = j_lo; j <= j_hi; ++j) {
-      const CellIndex c = axis == 0 ? CellIndex{i, j} : CellIndex{j, i};
-      if (visit(c)) return true;
-    }
+void FastPenetrationFilter::prepareJudging(const Eigen::Vector2d& origin) {
+  // The reach of this frame: its points and the sensor, widened by how far
+  // off a beam and beyond its point a penetrating cell can lie.
+  Eigen::Vector2d lo = origin, hi = origin;
+  for (const auto& p : points_) {
+    if (std::isnan(p.x())) continue;
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
   }
-  return false;
+  const double reach = rule_.corridorHalfWidth() + rule_.behindMargin() + grid_.cellSize();
+  window_.build(grid_, grid_.cellOf(lo.array() - reach),
+                grid_.cellOf(hi.array() + reach));
 }
-
-}  // namespace
 
 bool FastPenetrationFilter::isMisdetected(const Eigen::Vector2d& r, const Eigen::Vector2d& p) {
   const Eigen::Vector2d v = p - r;
@@ -158,10 +150,8 @@ bool FastPenetrationFilter::isMisdetected(const Eigen::Vector2d& r, const Eigen:
   const double own_sq = rule_.ownMarginSq(length);
   // Penetrating cells project onto the beam between r and p + behind margin.
   const Eigen::Vector2d end = r + v * ((length + rule_.behindMargin()) / length);
-  const int axis = std::abs(v.x()) >= std::abs(v.y()) ? 0 : 1;
-  return visitThickRay(grid_, r, end, rule_.corridorHalfWidth(), axis, [&](CellIndex c) {
-    return grid_.count(c) > params_.obstacle_threshold &&
-           rule_.penetrates(r, p, grid_.cellCentre(c), own_sq);
+  return window_.anyAlongRay(r, end, rule_.corridorHalfWidth(), [&](CellIndex c) {
+    return rule_.penetrates(r, p, grid_.cellCentre(c), own_sq);
   });
 }
 

@@ -26,8 +26,12 @@ void PenetrationGrid::change(CellIndex c, int delta) {
     last_key_ = kNoKey;  // a lookup may have cached this key as absent
   }
   Tile& tile = *it->second;
-  std::uint32_t& cell = tile.counts[slot(c)];
+  const std::size_t index = slot(c);
+  std::uint32_t& cell = tile.counts[index];
   cell = static_cast<std::uint32_t>(static_cast<std::int64_t>(cell) + delta);
+  const std::uint64_t bit = std::uint64_t{1} << (index % 64);
+  if (static_cast<std::int64_t>(cell) > obstacle_threshold_) tile.obstacles[index / 64] |= bit;
+  else tile.obstacles[index / 64] &= ~bit;
   tile.total = static_cast<std::uint32_t>(static_cast<std::int64_t>(tile.total) + delta);
   if (tile.total == 0) {
     if (last_tile_ == it->second.get()) last_key_ = kNoKey;

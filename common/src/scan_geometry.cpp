@@ -32,29 +32,48 @@ Eigen::Vector2d paperEquation4(const Pose2& robot, double c, double theta_c, dou
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-void pointsFrom(const Scan& scan, double base_angle, double sign, const Eigen::Vector2d& origin,
-                std::vector<Eigen::Vector2d>& out) {
-  out.resize(scan.size());
-  for (std::size_t i = 0; i < scan.size(); ++i) {
-    if (!scan.hasReturn(i)) {
-      out[i] = Eigen::Vector2d(kNaN, kNaN);
-      continue;
-    }
-    const double phi = base_angle + sign * beamAngle(scan, i);
-    out[i] = origin + scan.ranges[i] * Eigen::Vector2d(std::cos(phi), std::sin(phi));
-  }
-}
 }  // namespace
 
-void sensorFramePoints(const Scan& scan, const SensorInfo& sensor,
+const std::vector<Eigen::Vector2d>& BeamDirectionTable::directions(const Scan& scan,
+                                                                   const SensorInfo& sensor) {
+  const double sign = directionSign(sensor.direction);
+  if (directions_.size() != scan.size() || angle_min_ != scan.angle_min ||
+      angle_increment_ != scan.angle_increment || sign_ != sign) {
+    directions_.resize(scan.size());
+    for (std::size_t i = 0; i < scan.size(); ++i) {
+      const double a = sign * beamAngle(scan, i);
+      directions_[i] = {std::cos(a), std::sin(a)};
+    }
+    angle_min_ = scan.angle_min;
+    angle_increment_ = scan.angle_increment;
+    sign_ = sign;
+  }
+  return directions_;
+}
+
+void sensorFramePoints(const Scan& scan, const SensorInfo& sensor, BeamDirectionTable& table,
                        std::vector<Eigen::Vector2d>& out) {
-  pointsFrom(scan, 0.0, directionSign(sensor.direction), Eigen::Vector2d::Zero(), out);
+  const auto& dirs = table.directions(scan, sensor);
+  out.resize(scan.size());
+  for (std::size_t i = 0; i < scan.size(); ++i)
+    out[i] = scan.hasReturn(i) ? Eigen::Vector2d(scan.ranges[i] * dirs[i]) : Eigen::Vector2d(kNaN, kNaN);
+}
+
+void worldPoints(const Scan& scan, const SensorInfo& sensor, BeamDirectionTable& table,
+                 std::vector<Eigen::Vector2d>& out) {
+  const auto& dirs = table.directions(scan, sensor);
+  const Eigen::Rotation2Dd rotation(scan.pose.theta + sensor.mount.yaw);
+  const Eigen::Matrix2d r = rotation.toRotationMatrix();
+  const Eigen::Vector2d origin = sensorOrigin(scan.pose, sensor.mount);
+  out.resize(scan.size());
+  for (std::size_t i = 0; i < scan.size(); ++i)
+    out[i] = scan.hasReturn(i) ? Eigen::Vector2d(origin + scan.ranges[i] * (r * dirs[i]))
+                               : Eigen::Vector2d(kNaN, kNaN);
 }
 
 void worldPoints(const Scan& scan, const SensorInfo& sensor, std::vector<Eigen::Vector2d>& out) {
-  pointsFrom(scan, scan.pose.theta + sensor.mount.yaw, directionSign(sensor.direction),
-             sensorOrigin(scan.pose, sensor.mount), out);
+  BeamDirectionTable table;
+  worldPoints(scan, sensor, table, out);
 }
 
 bool isFullTurn(const Scan& scan) {

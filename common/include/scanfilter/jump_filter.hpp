@@ -9,6 +9,7 @@
 #include "scanfilter/implementation.hpp"
 #include "scanfilter/jump_cluster_rule.hpp"
 #include "scanfilter/scan.hpp"
+#include "scanfilter/scan_geometry.hpp"
 #include "scanfilter/sensor_info.hpp"
 
 namespace scanfilter {
@@ -33,6 +34,7 @@ class JumpFilter {
   }
 
   JumpClusterRule rule_;
+  BeamDirectionTable directions_;
   std::vector<Eigen::Vector2d> points_;  // sensor frame
   std::vector<std::uint8_t> free_;       // 1 while a point belongs to no cluster
   std::vector<std::uint32_t> cluster_;

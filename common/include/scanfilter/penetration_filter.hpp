@@ -9,10 +9,12 @@
 #include <Eigen/Core>
 
 #include "scanfilter/implementation.hpp"
+#include "scanfilter/obstacle_window.hpp"
 #include "scanfilter/penetration_filter_params.hpp"
 #include "scanfilter/penetration_grid.hpp"
 #include "scanfilter/penetration_rule.hpp"
 #include "scanfilter/scan.hpp"
+#include "scanfilter/scan_geometry.hpp"
 #include "scanfilter/sensor_info.hpp"
 
 namespace scanfilter {
@@ -30,6 +32,11 @@ class PenetrationFilter {
   // kMisdetected. Frames must come in stamp order.
   void apply(const Scan& scan, const SensorInfo& sensor, std::span<std::uint8_t> labels);
 
+  // Judges `scan` against the current grid without changing any state: no
+  // cache update, no expiry, no warm-up count. apply() is reset check,
+  // expiry, judge() and caching.
+  void judge(const Scan& scan, const SensorInfo& sensor, std::span<std::uint8_t> labels);
+
   // Forget every cached frame and start the warm-up again.
   void reset();
 
@@ -42,8 +49,9 @@ class PenetrationFilter {
   bool warmedUp() const { return frames_seen_ >= static_cast<std::size_t>(params_.min_frames); }
 
  protected:
-  // Called once per judged frame, before the first isMisdetected().
-  virtual void prepareJudging() {}
+  // Called once per judged frame, before the first isMisdetected(); points_
+  // then holds the frame's world points.
+  virtual void prepareJudging(const Eigen::Vector2d& /*origin*/) {}
   // True when the beam from sensor r to p passes through an obstacle cell.
   virtual bool isMisdetected(const Eigen::Vector2d& r, const Eigen::Vector2d& p) = 0;
 
@@ -51,6 +59,7 @@ class PenetrationFilter {
   PenetrationRule rule_;
   PenetrationGrid grid_;      // points the filter kept: the obstacle votes
   PenetrationGrid evidence_;  // every return, kept or not: for the rescue
+  std::vector<Eigen::Vector2d> points_;  // world points of the frame being judged
 
  private:
   struct CachedFrame {
@@ -65,7 +74,7 @@ class PenetrationFilter {
   void cacheFrame(double stamp, std::span<const std::uint8_t> labels);
 
   std::deque<CachedFrame> cache_;
-  std::vector<Eigen::Vector2d> points_;  // world points of the frame being judged
+  BeamDirectionTable directions_;
   std::optional<Eigen::Vector2d> last_origin_;
   std::size_t frames_seen_ = 0;
   std::size_t resets_ = 0;
@@ -77,19 +86,22 @@ class ReferencePenetrationFilter final : public PenetrationFilter {
   using PenetrationFilter::PenetrationFilter;
 
  private:
-  void prepareJudging() override;
+  void prepareJudging(const Eigen::Vector2d& origin) override;
   bool isMisdetected(const Eigen::Vector2d& r, const Eigen::Vector2d& p) override;
   std::vector<Eigen::Vector2d> obstacles_;
 };
 
-// Walks each beam through the grid, visiting only the cells of a thick ray
-// around it: the cost per point follows the beam's length, not the map.
+// Walks each beam through a dense snapshot of the obstacle cells within the
+// frame's reach, visiting only the cells of a thick ray around it: the cost
+// per point follows the beam's length, not the map.
 class FastPenetrationFilter final : public PenetrationFilter {
  public:
   using PenetrationFilter::PenetrationFilter;
 
  private:
+  void prepareJudging(const Eigen::Vector2d& origin) override;
   bool isMisdetected(const Eigen::Vector2d& r, const Eigen::Vector2d& p) override;
+  ObstacleWindow window_;
 };
 
 std::unique_ptr<PenetrationFilter> makePenetrationFilter(const PenetrationFilterParams& params,

@@ -1,5 +1,8 @@
 #pragma once
+#include <algorithm>
 #include <array>
+#include <bit>
+#include <limits>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -25,7 +28,10 @@ class PenetrationGrid {
   static constexpr int kTileBits = 5;  // 32 x 32 cells a tile
   static constexpr int kTileSide = 1 << kTileBits;
 
-  explicit PenetrationGrid(double cell_size) : cell_size_(cell_size) {}
+  // Cells counting more than `obstacle_threshold` are obstacles; the grid keeps
+  // a bitmap of them per tile so obstacle lookups skip empty cells.
+  explicit PenetrationGrid(double cell_size, int obstacle_threshold = std::numeric_limits<int>::max())
+      : cell_size_(cell_size), obstacle_threshold_(obstacle_threshold) {}
 
   double cellSize() const { return cell_size_; }
   CellIndex cellOf(const Eigen::Vector2d& p) const {
@@ -46,12 +52,32 @@ class PenetrationGrid {
   // Calls fn(cell, count) for every cell whose count is above `threshold`.
   void forEachCellAbove(int threshold, const std::function<void(CellIndex, int)>& fn) const;
 
+  // Calls fn(cell) for every obstacle cell in lo..hi (inclusive); visits only
+  // the tiles that exist there and, in them, only the obstacle bits.
+  template <typename Fn>
+  void forEachObstacleIn(CellIndex lo, CellIndex hi, Fn&& fn) const {
+    for (std::int32_t ty = lo.y >> kTileBits; ty <= hi.y >> kTileBits; ++ty) {
+      for (std::int32_t tx = lo.x >> kTileBits; tx <= hi.x >> kTileBits; ++tx) {
+        const Tile* tile = findTile(tileKey({tx * kTileSide, ty * kTileSide}));
+        if (tile == nullptr) continue;
+        for (std::size_t word = 0; word < tile->obstacles.size(); ++word) {
+          for (std::uint64_t bits = tile->obstacles[word]; bits != 0; bits &= bits - 1) {
+            const auto index = static_cast<int>(word * 64 + static_cast<std::size_t>(std::countr_zero(bits)));
+            const CellIndex c{tx * kTileSide + index % kTileSide, ty * kTileSide + index / kTileSide};
+            if (c.x >= lo.x && c.x <= hi.x && c.y >= lo.y && c.y <= hi.y) fn(c);
+          }
+        }
+      }
+    }
+  }
+
   std::size_t tileCount() const { return tiles_.size(); }
   std::size_t memoryBytes() const { return tiles_.size() * (sizeof(Tile) + 3 * sizeof(void*)); }
 
  private:
   struct Tile {
     std::array<std::uint32_t, kTileSide * kTileSide> counts{};
+    std::array<std::uint64_t, kTileSide * kTileSide / 64> obstacles{};  // bit per cell: count > threshold
     std::uint32_t total = 0;  // sum of counts: the tile is freed at zero
   };
   static constexpr std::uint64_t kNoKey = ~std::uint64_t{0};
@@ -68,6 +94,7 @@ class PenetrationGrid {
   void change(CellIndex c, int delta);
 
   double cell_size_;
+  int obstacle_threshold_;
   std::unordered_map<std::uint64_t, std::unique_ptr<Tile>> tiles_;
   // One-entry cache: consecutive lookups of a beam walk mostly hit one tile.
   mutable std::uint64_t last_key_ = kNoKey;

@@ -31,13 +31,29 @@ Eigen::Vector2d beamToWorld(const Scan& scan, const SensorInfo& sensor, std::siz
 Eigen::Vector2d paperEquation4(const Pose2& robot, double c, double theta_c, double theta_p,
                                double dis_p);
 
+// Unit beam directions in the sensor frame (direction sign applied), kept
+// between scans: a sensor's beam layout rarely changes, and recomputing 360
+// sines and cosines per scan costs as much as the fast jump filter itself.
+class BeamDirectionTable {
+ public:
+  const std::vector<Eigen::Vector2d>& directions(const Scan& scan, const SensorInfo& sensor);
+
+ private:
+  std::vector<Eigen::Vector2d> directions_;
+  double angle_min_ = 0.0;
+  double angle_increment_ = 0.0;
+  double sign_ = 0.0;
+};
+
 // Points of one scan in the sensor's own frame, with the direction applied so
 // that angles grow counter-clockwise: what the jump filter clusters on.
 // Beams without a return get NaN coordinates.
-void sensorFramePoints(const Scan& scan, const SensorInfo& sensor,
+void sensorFramePoints(const Scan& scan, const SensorInfo& sensor, BeamDirectionTable& table,
                        std::vector<Eigen::Vector2d>& out);
 
 // World points of one scan; beams without a return get NaN coordinates.
+void worldPoints(const Scan& scan, const SensorInfo& sensor, BeamDirectionTable& table,
+                 std::vector<Eigen::Vector2d>& out);
 void worldPoints(const Scan& scan, const SensorInfo& sensor, std::vector<Eigen::Vector2d>& out);
 
 // True when the scan's beams cover a whole turn, so the first and last beams

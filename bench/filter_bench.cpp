@@ -1,0 +1,141 @@
+// Time per frame of each filter, fast vs reference (Google Benchmark).
+//   build/bench/filter_bench --benchmark_min_time=0.2
+// Jump filter: one simulated hall frame at 360, 1,080 and 3,600 beams.
+// Penetration filter: one frame judged against a cache that holds every frame
+// of a tour of 100 m² or 1,000 m² of rooms (T_max = ∞), so the reference's
+// obstacle set grows with the area while the fast beam walk should not.
+#include <cmath>
+#include <map>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include "scanfilter/jump_filter.hpp"
+#include "scanfilter/penetration_filter.hpp"
+#include "scanfilter/point_code.hpp"
+#include "scanfilter/sim/scan_simulator.hpp"
+
+using namespace scanfilter;
+
+namespace {
+
+constexpr double kRoomSide = 5.0;
+constexpr double kDoorWidth = 1.0;
+
+Scan simulatedFrame(sim::Scene scene, int beams, int frame) {
+  scene.lidar.beams = beams;
+  sim::ScanSimulator simulator(std::move(scene), 1);
+  ScanRecord record;
+  for (int k = 0; k <= frame; ++k) simulator.next(record);
+  return record.scan;
+}
+
+// A grid of square rooms with a door in the middle of every inner wall and a
+// serpentine tour through all of them.
+sim::Scene roomGrid(int rooms_x, int rooms_y) {
+  sim::Scene scene = sim::findScene("hall");  // the hall's sensor and lidar model
+  scene.segments.clear();
+  scene.legs.clear();
+  const double w = rooms_x * kRoomSide, h = rooms_y * kRoomSide, half_door = kDoorWidth / 2;
+  auto wall = [&](Eigen::Vector2d a, Eigen::Vector2d b) { scene.segments.push_back({a, b, sim::Material::kRough}); };
+  wall({0, 0}, {w, 0});
+  wall({w, 0}, {w, h});
+  wall({w, h}, {0, h});
+  wall({0, h}, {0, 0});
+  for (int i = 1; i < rooms_x; ++i)
+    for (int j = 0; j < rooms_y; ++j) {
+      const double x = i * kRoomSide, yc = (j + 0.5) * kRoomSide;
+      wall({x, j * kRoomSide}, {x, yc - half_door});
+      wall({x, yc + half_door}, {x, (j + 1) * kRoomSide});
+    }
+  for (int j = 1; j < rooms_y; ++j)
+    for (int i = 0; i < rooms_x; ++i) {
+      const double y = j * kRoomSide, xc = (i + 0.5) * kRoomSide;
+      wall({i * kRoomSide, y}, {xc - half_door, y});
+      wall({xc + half_door, y}, {(i + 1) * kRoomSide, y});
+    }
+  scene.trajectory.waypoints.clear();
+  for (int j = 0; j < rooms_y; ++j)
+    for (int k = 0; k < rooms_x; ++k) {
+      const int i = j % 2 == 0 ? k : rooms_x - 1 - k;
+      scene.trajectory.waypoints.push_back({(i + 0.5) * kRoomSide, (j + 0.5) * kRoomSide});
+    }
+  scene.trajectory.speed = 0.5;
+  return scene;
+}
+
+// A penetration filter whose cache holds a whole tour, and the frame to judge.
+struct ExploredState {
+  std::unique_ptr<PenetrationFilter> filter;
+  Scan frame;
+  SensorInfo sensor;
+  std::size_t obstacle_cells = 0;
+};
+
+ExploredState& explored(Implementation impl, int area_m2, int beams) {
+  static std::map<std::tuple<Implementation, int, int>, ExploredState> cache;
+  auto& state = cache[{impl, area_m2, beams}];
+  if (state.filter) return state;
+  const int rooms = static_cast<int>(std::lround(std::sqrt(area_m2 / (kRoomSide * kRoomSide))));
+  sim::Scene scene = roomGrid(rooms, rooms);
+  PenetrationFilterParams p;
+  p.frame_lifetime = 1e9;
+  p.max_cache_frames = 1u << 30;
+  state.filter = makePenetrationFilter(p, impl);
+  sim::ScanSimulator simulator(scene, 1);
+  state.sensor = simulator.header().sensor;
+  ScanRecord record;
+  std::vector<std::uint8_t> labels;
+  while (simulator.next(record)) {
+    labels.assign(record.scan.size(), static_cast<std::uint8_t>(PointCode::kValid));
+    for (std::size_t i = 0; i < labels.size(); ++i)
+      if (!record.scan.hasReturn(i)) labels[i] = static_cast<std::uint8_t>(PointCode::kNoReturn);
+    state.filter->apply(record.scan, state.sensor, labels);
+  }
+  // The judged frame: the tour's last pose, at the requested resolution.
+  scene.lidar.beams = beams;
+  state.frame = simulatedFrame(scene, beams, static_cast<int>(simulator.frameCount()) - 1);
+  state.filter->grid().forEachCellAbove(p.obstacle_threshold, [&](CellIndex, int) { ++state.obstacle_cells; });
+  return state;
+}
+
+void BM_JumpFilter(benchmark::State& state, Implementation impl) {
+  const int beams = static_cast<int>(state.range(0));
+  const sim::Scene hall = sim::findScene("hall");
+  const Scan scan = simulatedFrame(hall, beams, 200);
+  auto filter = makeJumpFilter(JumpFilterParams{}, impl);
+  std::vector<std::uint8_t> labels(scan.size());
+  for (auto _ : state) {
+    filter->apply(scan, hall.sensor, labels);
+    benchmark::DoNotOptimize(labels.data());
+  }
+  state.counters["beams"] = beams;
+}
+
+void BM_PenetrationJudge(benchmark::State& state, Implementation impl) {
+  const int beams = static_cast<int>(state.range(0));
+  const int area = static_cast<int>(state.range(1));
+  ExploredState& s = explored(impl, area, beams);
+  std::vector<std::uint8_t> labels(s.frame.size());
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < labels.size(); ++i)
+      labels[i] = static_cast<std::uint8_t>(s.frame.hasReturn(i) ? PointCode::kValid : PointCode::kNoReturn);
+    s.filter->judge(s.frame, s.sensor, labels);
+    benchmark::DoNotOptimize(labels.data());
+  }
+  state.counters["obstacle_cells"] = static_cast<double>(s.obstacle_cells);
+  state.counters["grid_MB"] = static_cast<double>(s.filter->grid().memoryBytes()) / 1e6;
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(BM_JumpFilter, reference, Implementation::kReference)->Arg(360)->Arg(1080)->Arg(3600)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_JumpFilter, fast, Implementation::kFast)->Arg(360)->Arg(1080)->Arg(3600)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_PenetrationJudge, reference, Implementation::kReference)
+    ->ArgsProduct({{360, 1080, 3600}, {100, 1000}})->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_PenetrationJudge, fast, Implementation::kFast)
+    ->ArgsProduct({{360, 1080, 3600}, {100, 1000}})->Unit(benchmark::kMicrosecond);
+
+BENCHMARK_MAIN();

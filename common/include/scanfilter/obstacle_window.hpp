@@ -1,0 +1,110 @@
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "scanfilter/penetration_grid.hpp"
+
+namespace scanfilter {
+
+// A dense snapshot of the obstacle cells of a PenetrationGrid inside one
+// rectangle of cells: the reach of the frame being judged. Built once per
+// frame, its size follows the sensor's range, never the map's. Besides the
+// cells it flags 8 x 8-cell blocks holding any obstacle, so a beam walk skips
+// free space a block at a time.
+class ObstacleWindow {
+ public:
+  static constexpr int kBlockBits = 3;
+  static constexpr int kBlockSide = 1 << kBlockBits;
+
+  // Snapshots the grid's obstacle cells in lo..hi (inclusive).
+  void build(const PenetrationGrid& grid, CellIndex lo, CellIndex hi);
+
+  bool isObstacle(CellIndex c) const {
+    const auto x = static_cast<std::uint32_t>(c.x - lo_.x);
+    const auto y = static_cast<std::uint32_t>(c.y - lo_.y);
+    if (x >= width_ || y >= height_) return false;  // also catches c < lo (wraps)
+    return cells_[static_cast<std::size_t>(y) * width_ + x] != 0;
+  }
+
+  // Calls pred(cell) for the obstacle cells whose centre can lie within
+  // `half_width` of segment a-b (a superset: pred makes the exact test) and
+  // returns true at the first cell for which pred does.
+  template <typename Pred>
+  bool anyAlongRay(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double half_width, Pred&& pred) const;
+
+ private:
+  bool blockHasObstacle(std::int32_t bx, std::int32_t by) const {
+    const auto x = static_cast<std::uint32_t>(bx - block_lo_.x);
+    const auto y = static_cast<std::uint32_t>(by - block_lo_.y);
+    if (x >= block_width_ || y >= block_height_) return false;
+    return blocks_[static_cast<std::size_t>(y) * block_width_ + x] != 0;
+  }
+
+  double cell_size_ = 1.0;
+  CellIndex lo_;
+  std::uint32_t width_ = 0;
+  std::uint32_t height_ = 0;
+  std::vector<std::uint8_t> cells_;
+  CellIndex block_lo_;
+  std::uint32_t block_width_ = 0;
+  std::uint32_t block_height_ = 0;
+  std::vector<std::uint8_t> blocks_;
+};
+
+namespace detail {
+// std::floor without SSE4.1 is a library call; this is two instructions.
+inline std::int32_t floorToInt(double x) {
+  const auto i = static_cast<std::int32_t>(x);
+  return i - (x < static_cast<double>(i));
+}
+// Float slack on the walk's bounds: pred re-runs the exact test on every cell
+// visited, so the walk only has to be a superset.
+inline constexpr double kBoundSlack = 1e-9;
+}  // namespace detail
+
+template <typename Pred>
+bool ObstacleWindow::anyAlongRay(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double half_width,
+                                 Pred&& pred) const {
+  using detail::floorToInt;
+  const Eigen::Vector2d d = b - a;
+  const int axis = std::abs(d.x()) >= std::abs(d.y()) ? 0 : 1;  // walk the dominant axis
+  const int other = 1 - axis;
+  const double inv_w = 1.0 / cell_size_;
+  const double slope = d[other] / d[axis];
+  // A centre within half_width of the line sits within half_width / |cos| of it along `other`.
+  const double band = half_width * std::sqrt(1.0 + slope * slope) + detail::kBoundSlack;
+  // Cell indices whose centres lie in [lo, hi]: centre = (i + 0.5) * w.
+  const auto first = [inv_w](double lo) { return -floorToInt(-(lo * inv_w - 0.5)); };
+  const auto last = [inv_w](double hi) { return floorToInt(hi * inv_w - 0.5); };
+  const auto lineAt = [&](std::int32_t i) { return a[other] + ((i + 0.5) * cell_size_ - a[axis]) * slope; };
+  const auto cell = [axis](std::int32_t i, std::int32_t j) { return axis == 0 ? CellIndex{i, j} : CellIndex{j, i}; };
+
+  const std::int32_t lo = first(std::min(a[axis], b[axis]) - half_width - detail::kBoundSlack);
+  const std::int32_t hi = last(std::max(a[axis], b[axis]) + half_width + detail::kBoundSlack);
+  for (std::int32_t chunk = lo >> kBlockBits; chunk <= hi >> kBlockBits; ++chunk) {
+    const std::int32_t i0 = std::max(lo, chunk * kBlockSide);
+    const std::int32_t i1 = std::min(hi, chunk * kBlockSide + kBlockSide - 1);
+    // Blocks the band crosses within this chunk of columns; all free: skip it.
+    const double y0 = lineAt(i0), y1 = lineAt(i1);
+    const std::int32_t b0 = first(std::min(y0, y1) - band) >> kBlockBits;
+    const std::int32_t b1 = last(std::max(y0, y1) + band) >> kBlockBits;
+    bool occupied = false;
+    for (std::int32_t bj = b0; bj <= b1 && !occupied; ++bj)
+      occupied = axis == 0 ? blockHasObstacle(chunk, bj) : blockHasObstacle(bj, chunk);
+    if (!occupied) continue;
+    for (std::int32_t i = i0; i <= i1; ++i) {
+      const double line = lineAt(i);
+      for (std::int32_t j = first(line - band), j_hi = last(line + band); j <= j_hi; ++j) {
+        const CellIndex c = cell(i, j);
+        if (isObstacle(c) && pred(c)) return true;
+      }
+    }
+  }
+  return false;
+}
+
+}  // namespace scanfilter
