@@ -4,7 +4,8 @@
 // scene, then reported on other seeds so the defaults are not fit to the data
 // they are judged on.
 //
-//   build/bench/accuracy_sweep [--tune-seed 1] [--test-seeds 2,3] [--frames N]
+//   build/bench/accuracy_sweep [--tune-seed 1] [--test-seeds 2,3] [--frames N] [--skip-stage1 1]
+// --skip-stage1 1 starts stage 2 from the built-in step-1 defaults.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -78,9 +79,11 @@ int main(int argc, char** argv) {
   std::uint64_t tune_seed = 1;
   std::vector<std::uint64_t> test_seeds = {2, 3};
   int frames = 0;
+  bool skip_stage1 = false;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string flag = argv[i];
     if (flag == "--tune-seed") tune_seed = std::strtoull(argv[i + 1], nullptr, 10);
+    else if (flag == "--skip-stage1") skip_stage1 = std::atoi(argv[i + 1]) != 0;
     else if (flag == "--frames") frames = std::atoi(argv[i + 1]);
     else if (flag == "--test-seeds") {
       test_seeds.clear();
@@ -98,10 +101,11 @@ int main(int argc, char** argv) {
   TwoStepFilterParams best;
   double best_obj = -1.0;
   std::printf("\nstage 1 (step 1 + rescue, step 2 judging off: obstacle_threshold huge)\n");
-  for (double alpha : {0.4, 0.6, 0.8, 1.0})
-    for (double l_min : {0.005, 0.01, 0.02})
+  if (!skip_stage1)
+  for (double alpha : {0.3, 0.4, 0.6, 1.0})
+    for (double l_min : {0.01, 0.02})
       for (double l_max : {0.05, 0.1, 0.2})
-        for (int radius : {-1, 0, 1})  // -1: no rescue (the paper)
+        for (int radius : {-1, 1})  // -1: no rescue (the paper)
           for (int count : {2, 3, 5}) {
             if (radius < 0 && count != 2) continue;
             TwoStepFilterParams p;
@@ -128,10 +132,10 @@ int main(int argc, char** argv) {
   std::printf("\nstage 2 (step 2 with stage 1's best)\n");
   const TwoStepFilterParams stage1 = best;
   best_obj = -1.0;
-  for (double corridor : {0.015, 0.025, 0.035})
-    for (double own : {0.1, 0.15, 0.25})
-      for (int obs : {1, 2, 4})
-        for (double lifetime : {1.0, 2.0, 4.0}) {
+  for (double corridor : {0.025, 0.035, 0.05})
+    for (double own : {0.15, 0.25})
+      for (int obs : {2, 3, 4})
+        for (double lifetime : {2.0, 4.0}) {
             TwoStepFilterParams p = stage1;
             p.penetration.corridor_half_width = corridor;
             p.penetration.own_surface_margin = own;

@@ -127,6 +127,8 @@ void readPenetration(Section& s, FilterConfig& config) {
   s.read("min_frames", p.min_frames);
   s.read("obstacle_threshold", p.obstacle_threshold);
   s.read("corridor_half_width", p.corridor_half_width);
+  s.read("obstacle_at_centroid", p.obstacle_at_centroid);
+  s.read("require_both_sides", p.require_both_sides);
   s.read("own_surface_margin", p.own_surface_margin);
   s.read("own_surface_margin_per_m", p.own_surface_margin_per_m);
   s.read("behind_margin", p.behind_margin);

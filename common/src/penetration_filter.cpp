@@ -116,14 +116,15 @@ void ReferencePenetrationFilter::prepareJudging(const Eigen::Vector2d& /*origin*
   // Step 6: cells counting more than obs_th points are the obstacle set Q.
   obstacles_.clear();
   grid_.forEachCellAbove(params_.obstacle_threshold,
-                         [this](CellIndex c, int) { obstacles_.push_back(grid_.cellCentre(c)); });
+                         [this](CellIndex c, int) { obstacles_.push_back(obstaclePosition(c)); });
 }
 
 bool ReferencePenetrationFilter::isMisdetected(const Eigen::Vector2d& r,
                                                const Eigen::Vector2d& p) {
   const double own_sq = rule_.ownMarginSq((p - r).norm());
+  unsigned sides = PenetrationRule::kNone;
   for (const auto& q : obstacles_)  // steps a-f: every obstacle cell in turn
-    if (rule_.penetrates(r, p, q, own_sq)) return true;
+    if (enoughSides(sides, rule_.penetrationSide(r, p, q, own_sq))) return true;
   return false;
 }
 
@@ -138,7 +139,7 @@ void FastPenetrationFilter::prepareJudging(const Eigen::Vector2d& origin) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
-  const double reach = rule_.corridorHalfWidth() + rule_.behindMargin() + grid_.cellSize();
+  const double reach = rule_.corridorHalfWidth() + positionSlack() + rule_.behindMargin() + grid_.cellSize();
   window_.build(grid_, grid_.cellOf(lo.array() - reach),
                 grid_.cellOf(hi.array() + reach));
 }
@@ -150,8 +151,9 @@ bool FastPenetrationFilter::isMisdetected(const Eigen::Vector2d& r, const Eigen:
   const double own_sq = rule_.ownMarginSq(length);
   // Penetrating cells project onto the beam between r and p + behind margin.
   const Eigen::Vector2d end = r + v * ((length + rule_.behindMargin()) / length);
-  return window_.anyAlongRay(r, end, rule_.corridorHalfWidth(), [&](CellIndex c) {
-    return rule_.penetrates(r, p, grid_.cellCentre(c), own_sq);
+  unsigned sides = PenetrationRule::kNone;
+  return window_.anyAlongRay(r, end, rule_.corridorHalfWidth() + positionSlack(), [&](CellIndex c) {
+    return enoughSides(sides, rule_.penetrationSide(r, p, obstaclePosition(c), own_sq));
   });
 }
 

@@ -17,18 +17,29 @@ int PenetrationGrid::count(CellIndex c) const {
   return tile ? static_cast<int>(tile->counts[slot(c)]) : 0;
 }
 
-void PenetrationGrid::change(CellIndex c, int delta) {
+Eigen::Vector2d PenetrationGrid::centroid(CellIndex c) const {
+  const Tile* tile = findTile(tileKey(c));
+  const std::size_t index = slot(c);
+  if (tile == nullptr || tile->counts[index] == 0) return cellCentre(c);
+  return tile->sums[index] / static_cast<double>(tile->counts[index]);
+}
+
+void PenetrationGrid::change(const Eigen::Vector2d& p, int delta) {
+  const CellIndex c = cellOf(p);
   const std::uint64_t key = tileKey(c);
   auto it = tiles_.find(key);
   if (it == tiles_.end()) {
     assert(delta > 0 && "removing a point that was never added");
     it = tiles_.emplace(key, std::make_unique<Tile>()).first;
+    it->second->sums.fill(Eigen::Vector2d::Zero());
     last_key_ = kNoKey;  // a lookup may have cached this key as absent
   }
   Tile& tile = *it->second;
   const std::size_t index = slot(c);
   std::uint32_t& cell = tile.counts[index];
   cell = static_cast<std::uint32_t>(static_cast<std::int64_t>(cell) + delta);
+  // An emptied cell starts from an exact zero, so rounding never accumulates.
+  tile.sums[index] = cell == 0 ? Eigen::Vector2d::Zero() : Eigen::Vector2d(tile.sums[index] + delta * p);
   const std::uint64_t bit = std::uint64_t{1} << (index % 64);
   if (static_cast<std::int64_t>(cell) > obstacle_threshold_) tile.obstacles[index / 64] |= bit;
   else tile.obstacles[index / 64] &= ~bit;

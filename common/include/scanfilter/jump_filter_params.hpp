@@ -11,10 +11,10 @@ enum class SpanRange { kClusterMean, kSeed };
 // the sweep in docs/accuracy.md; config/filter.yaml documents every key.
 struct JumpFilterParams {
   double angular_accuracy_deg = 1.0;  // Δθ, the sensor's angular accuracy
-  double alpha = 0.6;                 // α, magnification of the neighbour radius
+  double alpha = 0.4;                 // α, magnification of the neighbour radius
   double theta_k_deg = 70.0;          // θK, largest surface-to-tangent angle allowed
-  double l_min = 0.005;               // m, minimum tangential length at d_min
-  double l_max = 0.05;                // m, minimum tangential length at d_max
+  double l_min = 0.02;                // m, minimum tangential length at d_min
+  double l_max = 0.10;                // m, minimum tangential length at d_max
   double d_min = 0.15;                // m, sensor's minimum range
   double d_max = 6.0;                 // m, sensor's maximum range
   SpanRange span_range = SpanRange::kClusterMean;

@@ -1,4 +1,5 @@
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <deque>
 #include <memory>
@@ -54,6 +55,18 @@ class PenetrationFilter {
   virtual void prepareJudging(const Eigen::Vector2d& /*origin*/) {}
   // True when the beam from sensor r to p passes through an obstacle cell.
   virtual bool isMisdetected(const Eigen::Vector2d& r, const Eigen::Vector2d& p) = 0;
+
+  // The position q of an obstacle cell used by the rule: centre or centroid.
+  Eigen::Vector2d obstaclePosition(CellIndex c) const {
+    return params_.obstacle_at_centroid ? grid_.centroid(c) : grid_.cellCentre(c);
+  }
+  // How far q can lie from its cell's centre: widens the fast walk's band.
+  double positionSlack() const { return params_.obstacle_at_centroid ? grid_.cellSize() * std::sqrt(0.5) : 0.0; }
+  // Collects the sides of penetrating cells; true once they are enough.
+  bool enoughSides(unsigned& sides, PenetrationRule::Side side) const {
+    sides |= side;
+    return params_.require_both_sides ? sides == PenetrationRule::kBothSides : sides != PenetrationRule::kNone;
+  }
 
   PenetrationFilterParams params_;
   PenetrationRule rule_;

@@ -12,6 +12,14 @@ struct PenetrationFilterParams {
   int min_frames = 5;               // F_Lmin: frames seen before anything is judged
   int obstacle_threshold = 2;       // obs_th: a cell counting more points is an obstacle
   double corridor_half_width = 0.035;  // m, step (c): cells farther off the beam are ignored
+  // Where an obstacle cell is: the paper's q_n is the cell centre; the mean of
+  // the points it counted puts a thin leg or an edge where it really is.
+  bool obstacle_at_centroid = true;
+  // Beyond the paper: a beam that really passes through a surface has that
+  // surface's cells on both of its sides; one passing beside an edge, a door
+  // jamb or a leg (within the pose error) has them on one side only. When
+  // true, a point is misdetected only if penetrating cells lie on both sides.
+  bool require_both_sides = true;
   double own_surface_margin = 0.15;    // m, cells nearer the point are its own surface
   double own_surface_margin_per_m = 0.02;  // m per m of range added to that margin
   double behind_margin = 0.0;       // m, step (e) read literally: cells this near beyond p mark it

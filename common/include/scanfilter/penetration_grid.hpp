@@ -42,12 +42,16 @@ class PenetrationGrid {
     return {(c.x + 0.5) * cell_size_, (c.y + 0.5) * cell_size_};
   }
 
-  void add(const Eigen::Vector2d& p) { change(cellOf(p), +1); }
-  void remove(const Eigen::Vector2d& p) { change(cellOf(p), -1); }
+  void add(const Eigen::Vector2d& p) { change(p, +1); }
+  void remove(const Eigen::Vector2d& p) { change(p, -1); }
   void clear() { tiles_.clear(); last_key_ = kNoKey; last_tile_ = nullptr; }
 
   // Count of one cell; 0 where no tile exists.
   int count(CellIndex c) const;
+
+  // Mean of the points counted in a cell (its centre when empty): where in
+  // the cell the obstacle really is.
+  Eigen::Vector2d centroid(CellIndex c) const;
 
   // Calls fn(cell, count) for every cell whose count is above `threshold`.
   void forEachCellAbove(int threshold, const std::function<void(CellIndex, int)>& fn) const;
@@ -78,6 +82,7 @@ class PenetrationGrid {
   struct Tile {
     std::array<std::uint32_t, kTileSide * kTileSide> counts{};
     std::array<std::uint64_t, kTileSide * kTileSide / 64> obstacles{};  // bit per cell: count > threshold
+    std::array<Eigen::Vector2d, kTileSide * kTileSide> sums;  // of the points counted, per cell
     std::uint32_t total = 0;  // sum of counts: the tile is freed at zero
   };
   static constexpr std::uint64_t kNoKey = ~std::uint64_t{0};
@@ -91,7 +96,7 @@ class PenetrationGrid {
     return static_cast<std::size_t>((c.y & (kTileSide - 1)) * kTileSide + (c.x & (kTileSide - 1)));
   }
   const Tile* findTile(std::uint64_t key) const;
-  void change(CellIndex c, int delta);
+  void change(const Eigen::Vector2d& p, int delta);
 
   double cell_size_;
   int obstacle_threshold_;

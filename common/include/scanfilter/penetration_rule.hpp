@@ -23,8 +23,21 @@ class PenetrationRule {
     return m * m;
   }
 
-  // True when obstacle cell centre q makes the point p, seen from sensor r,
-  // a misdetection. `own_sq` is ownMarginSq(|p - r|).
+  // Which side of the beam r->p a penetrating obstacle lies on.
+  enum Side : unsigned { kNone = 0, kLeft = 1, kRight = 2, kBothSides = kLeft | kRight };
+
+  // The side of the beam on which obstacle position q makes the point p, seen
+  // from sensor r, a misdetection; kNone when it does not. `own_sq` is
+  // ownMarginSq(|p - r|).
+  Side penetrationSide(const Eigen::Vector2d& r, const Eigen::Vector2d& p, const Eigen::Vector2d& q,
+                       double own_sq) const {
+    if (!penetrates(r, p, q, own_sq)) return kNone;
+    const Eigen::Vector2d v = p - r, w = q - r;
+    return v.x() * w.y() - v.y() * w.x() >= 0.0 ? kLeft : kRight;
+  }
+
+  // True when obstacle position q makes the point p, seen from sensor r, a
+  // misdetection (steps b-e). `own_sq` is ownMarginSq(|p - r|).
   bool penetrates(const Eigen::Vector2d& r, const Eigen::Vector2d& p, const Eigen::Vector2d& q,
                   double own_sq) const {
     const Eigen::Vector2d v = p - r;
