@@ -12,49 +12,18 @@
 #include <string>
 #include <vector>
 
-#include "scanfilter/removal_score.hpp"
-#include "scanfilter/sim/scan_simulator.hpp"
-#include "scanfilter/two_step_filter.hpp"
+#include "labelled_logs.hpp"
 
 using namespace scanfilter;
 
 namespace {
 
-struct Log {
-  std::string scene;
-  SensorInfo sensor;
-  std::vector<Scan> scans;
-};
+using bench::LabelledLog;
 
-std::vector<Log> simulateAll(std::uint64_t seed, int max_frames) {
-  std::vector<Log> logs;
-  for (const auto& name : sim::builtinSceneNames()) {
-    sim::ScanSimulator simulator(sim::findScene(name), seed);
-    Log log{name, simulator.header().sensor, {}};
-    ScanRecord record;
-    while ((max_frames == 0 || static_cast<int>(log.scans.size()) < max_frames) && simulator.next(record))
-      log.scans.push_back(record.scan);
-    logs.push_back(std::move(log));
-  }
-  return logs;
-}
-
-RemovalScore score(const std::vector<Log>& logs, const TwoStepFilterParams& base) {
-  RemovalScore total;
-  std::vector<std::uint8_t> labels;
-  for (const auto& log : logs) {
-    TwoStepFilterParams p = base;
-    p.jump.angular_accuracy_deg = log.sensor.angular_accuracy_deg;
-    p.jump.d_min = log.sensor.range_min;
-    p.jump.d_max = log.sensor.range_max;
-    TwoStepFilter filter(p, Implementation::kFast);
-    for (const auto& scan : log.scans) {
-      labels.resize(scan.size());
-      filter.apply(scan, log.sensor, labels);
-      total.add(scan, labels);
-    }
-  }
-  return total;
+RemovalScore score(const std::vector<LabelledLog>& logs, const TwoStepFilterParams& params) {
+  FilterConfig config;
+  config.params = params;
+  return bench::scoreFilter(logs, config);
 }
 
 // One number to rank by: the worst of the four targets, each scaled so 1.0
@@ -94,7 +63,7 @@ int main(int argc, char** argv) {
     }
   }
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // progress is visible when redirected
-  const auto tune = simulateAll(tune_seed, frames);
+  const auto tune = bench::simulateAllScenes(tune_seed, frames);
   std::printf("columns: jump P R F1 | misdetected P R F1 | valid falsely deleted | thin legs kept | objective\n");
 
   // Stage 1: step 1 alone, with the rescue that can restore its thin legs.
@@ -114,7 +83,7 @@ int main(int argc, char** argv) {
             p.jump.l_min = l_min;
             p.jump.l_max = l_max;
             p.penetration.rescue_persistent_points = radius >= 0;
-            p.penetration.rescue_radius_cells = std::max(radius, 0);
+            p.penetration.rescue_radius = 0.05 * std::max(radius, 0);
             p.penetration.rescue_min_count = count;
             p.penetration.obstacle_threshold = 1 << 30;  // nothing is an obstacle: judge nothing
             const RemovalScore s = score(tune, p);
@@ -125,37 +94,41 @@ int main(int argc, char** argv) {
             print(tag, s, obj);
             if (obj > best_obj) best_obj = obj, best = p;
           }
-  std::printf("stage 1 best: alpha %.1f l_min %.3f l_max %.2f rescue %d r %d n %d\n", best.jump.alpha,
+  std::printf("stage 1 best: alpha %.1f l_min %.3f l_max %.2f rescue %d radius %.2f n %d\n", best.jump.alpha,
               best.jump.l_min, best.jump.l_max, best.penetration.rescue_persistent_points,
-              best.penetration.rescue_radius_cells, best.penetration.rescue_min_count);
+              best.penetration.rescue_radius, best.penetration.rescue_min_count);
 
   std::printf("\nstage 2 (step 2 with stage 1's best)\n");
   const TwoStepFilterParams stage1 = best;
   best_obj = -1.0;
-  for (double corridor : {0.025, 0.035, 0.05})
+  for (double corridor : {0.035, 0.05})
     for (double own : {0.15, 0.25})
-      for (int obs : {2, 3, 4})
-        for (double lifetime : {2.0, 4.0}) {
+      for (int obs : {2, 3})
+        for (double rescue_radius : {0.03, 0.05, 0.08})
+          for (int rescue_count : {2, 3}) {
             TwoStepFilterParams p = stage1;
             p.penetration.corridor_half_width = corridor;
             p.penetration.own_surface_margin = own;
             p.penetration.obstacle_threshold = obs;
-            p.penetration.frame_lifetime = lifetime;
+            p.penetration.frame_lifetime = 4.0;
+            p.penetration.rescue_radius = rescue_radius;
+            p.penetration.rescue_min_count = rescue_count;
             const RemovalScore s = score(tune, p);
             const double obj = objective(s, false);
             char tag[160];
-            std::snprintf(tag, sizeof tag, "corridor %.3f own %.2f obs_th %d T_max %.0f", corridor, own, obs,
-                          lifetime);
+            std::snprintf(tag, sizeof tag, "corridor %.3f own %.2f obs_th %d T_max 4 rescue %.2f m n %d", corridor,
+                          own, obs, rescue_radius, rescue_count);
             print(tag, s, obj);
             if (obj > best_obj) best_obj = obj, best = p;
           }
   const auto& b = best.penetration;
-  std::printf("stage 2 best: corridor %.3f own %.2f obs_th %d T_max %.0f\n", b.corridor_half_width,
-              b.own_surface_margin, b.obstacle_threshold, b.frame_lifetime);
+  std::printf("stage 2 best: corridor %.3f own %.2f obs_th %d T_max %.0f rescue %.2f m n %d\n",
+              b.corridor_half_width, b.own_surface_margin, b.obstacle_threshold, b.frame_lifetime, b.rescue_radius,
+              b.rescue_min_count);
 
   std::printf("\nbest on the held-out seeds\n");
   for (auto seed : test_seeds) {
-    const auto test = simulateAll(seed, frames);
+    const auto test = bench::simulateAllScenes(seed, frames);
     char tag[64];
     std::snprintf(tag, sizeof tag, "seed %llu", static_cast<unsigned long long>(seed));
     const RemovalScore s = score(test, best);

@@ -32,7 +32,7 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(s.penetration.own_surface_margin_per_m, d.penetration.own_surface_margin_per_m);
   EXPECT_EQ(s.penetration.rescue_persistent_points, d.penetration.rescue_persistent_points);
   EXPECT_EQ(s.penetration.rescue_min_count, d.penetration.rescue_min_count);
-  EXPECT_EQ(s.penetration.rescue_radius_cells, d.penetration.rescue_radius_cells);
+  EXPECT_EQ(s.penetration.rescue_radius, d.penetration.rescue_radius);
   EXPECT_FALSE(shipped.angular_accuracy_deg) << "auto: from the sensor";
 }
 

@@ -137,7 +137,7 @@ void readPenetration(Section& s, FilterConfig& config) {
   s.read("cache_misdetected_points", p.cache_misdetected_points);
   s.read("rescue_persistent_points", p.rescue_persistent_points);
   s.read("rescue_min_count", p.rescue_min_count);
-  s.read("rescue_radius_cells", p.rescue_radius_cells);
+  s.read("rescue_radius", p.rescue_radius);
   s.requireRange("cell_size", p.cell_size, 1e-3, 10.0, "0.001 <= value <= 10 (m)");
   s.requireRange("frame_lifetime", p.frame_lifetime, 0.0, 1e9, "a value >= 0 (s)");
   s.requireRange("min_frames", p.min_frames, 1, 1e9, "an integer >= 1");
@@ -149,7 +149,7 @@ void readPenetration(Section& s, FilterConfig& config) {
   s.requireRange("pose_jump_reset", p.pose_jump_reset, 0.0, 1e9, "a value > 0 (m)");
   s.requireRange("max_cache_frames", static_cast<double>(p.max_cache_frames), 1, 1e7, "an integer >= 1");
   s.requireRange("rescue_min_count", p.rescue_min_count, 1, 1e9, "an integer >= 1");
-  s.requireRange("rescue_radius_cells", p.rescue_radius_cells, 0, 10, "an integer 0-10");
+  s.requireRange("rescue_radius", p.rescue_radius, 0.0, 1.0, "0 <= value <= 1 (m)");
   s.rejectUnknownKeys();
 }
 

@@ -93,11 +93,18 @@ void PenetrationFilter::judge(const Scan& scan, const SensorInfo& sensor,
   }
 }
 
-int PenetrationFilter::evidenceAround(CellIndex c) const {
-  const int r = params_.rescue_radius_cells;
+int PenetrationFilter::evidenceAround(const Eigen::Vector2d& p) const {
+  const CellIndex c = evidence_.cellOf(p);
+  const auto reach = static_cast<int>(std::ceil(params_.rescue_radius / evidence_.cellSize()));
+  const double radius_sq = params_.rescue_radius * params_.rescue_radius;
   int sum = 0;
-  for (int dy = -r; dy <= r; ++dy)
-    for (int dx = -r; dx <= r; ++dx) sum += evidence_.count({c.x + dx, c.y + dy});
+  for (int dy = -reach; dy <= reach; ++dy) {
+    for (int dx = -reach; dx <= reach; ++dx) {
+      const CellIndex n{c.x + dx, c.y + dy};
+      const int count = evidence_.count(n);
+      if (count > 0 && (evidence_.centroid(n) - p).squaredNorm() <= radius_sq) sum += count;
+    }
+  }
   return sum;
 }
 
@@ -105,7 +112,7 @@ void PenetrationFilter::rescuePersistentPoints(std::span<std::uint8_t> labels) {
   // The evidence holds only earlier frames, so a point cannot vouch for itself.
   for (std::size_t i = 0; i < labels.size(); ++i) {
     if (labels[i] != static_cast<std::uint8_t>(PointCode::kJump)) continue;
-    if (evidenceAround(evidence_.cellOf(points_[i])) >= params_.rescue_min_count)
+    if (evidenceAround(points_[i]) >= params_.rescue_min_count)
       labels[i] = static_cast<std::uint8_t>(PointCode::kValid);
   }
 }

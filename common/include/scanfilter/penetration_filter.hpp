@@ -81,7 +81,7 @@ class PenetrationFilter {
     std::vector<Eigen::Vector2d> others;  // the other returns, in evidence_ only
   };
   void rescuePersistentPoints(std::span<std::uint8_t> labels);
-  int evidenceAround(CellIndex c) const;
+  int evidenceAround(const Eigen::Vector2d& p) const;
   void resetOnPoseJump(const Eigen::Vector2d& origin, double stamp);
   void expireFrames(double stamp);
   void cacheFrame(double stamp, std::span<const std::uint8_t> labels);

@@ -33,7 +33,10 @@ struct PenetrationFilterParams {
   // does not leave. Off reproduces the paper.
   bool rescue_persistent_points = true;
   int rescue_min_count = 3;
-  int rescue_radius_cells = 1;  // evidence is summed over (2r+1)^2 cells around the point
+  // Evidence counts the cached returns of the cells whose centroid lies within
+  // this distance of the point: a thin leg's returns pile up within a few cm,
+  // a jump point lies off every surface by more than that.
+  double rescue_radius = 0.03;  // m
 };
 
 }  // namespace scanfilter
