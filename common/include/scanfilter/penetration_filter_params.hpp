@@ -8,10 +8,10 @@ namespace scanfilter {
 // config/filter.yaml documents every key and gives the paper-literal preset.
 struct PenetrationFilterParams {
   double cell_size = 0.05;          // m, W_g
-  double frame_lifetime = 2.0;      // s, T_max: cached frames older than this leave
+  double frame_lifetime = 4.0;      // s, T_max: cached frames older than this leave
   int min_frames = 5;               // F_Lmin: frames seen before anything is judged
   int obstacle_threshold = 2;       // obs_th: a cell counting more points is an obstacle
-  double corridor_half_width = 0.035;  // m, step (c): cells farther off the beam are ignored
+  double corridor_half_width = 0.05;   // m, step (c): cells farther off the beam are ignored
   // Where an obstacle cell is: the paper's q_n is the cell centre; the mean of
   // the points it counted puts a thin leg or an edge where it really is.
   bool obstacle_at_centroid = true;
@@ -36,7 +36,7 @@ struct PenetrationFilterParams {
   // Evidence counts the cached returns of the cells whose centroid lies within
   // this distance of the point: a thin leg's returns pile up within a few cm,
   // a jump point lies off every surface by more than that.
-  double rescue_radius = 0.03;  // m
+  double rescue_radius = 0.08;  // m
 };
 
 }  // namespace scanfilter
