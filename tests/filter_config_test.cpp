@@ -28,6 +28,15 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(s.penetration.min_frames, d.penetration.min_frames);
   EXPECT_EQ(s.penetration.obstacle_threshold, d.penetration.obstacle_threshold);
   EXPECT_EQ(s.penetration.corridor_half_width, d.penetration.corridor_half_width);
+  EXPECT_EQ(s.penetration.obstacle_at_centroid, d.penetration.obstacle_at_centroid);
+  EXPECT_EQ(s.penetration.require_both_sides, d.penetration.require_both_sides);
+  EXPECT_EQ(s.penetration.behind_margin, d.penetration.behind_margin);
+  EXPECT_EQ(s.penetration.pose_jump_reset, d.penetration.pose_jump_reset);
+  EXPECT_EQ(s.penetration.max_cache_frames, d.penetration.max_cache_frames);
+  EXPECT_EQ(s.penetration.cache_misdetected_points, d.penetration.cache_misdetected_points);
+  EXPECT_EQ(s.jump.span_range, d.jump.span_range);
+  EXPECT_EQ(s.jump_enabled, d.jump_enabled);
+  EXPECT_EQ(s.penetration_enabled, d.penetration_enabled);
   EXPECT_EQ(s.penetration.own_surface_margin, d.penetration.own_surface_margin);
   EXPECT_EQ(s.penetration.own_surface_margin_per_m, d.penetration.own_surface_margin_per_m);
   EXPECT_EQ(s.penetration.rescue_persistent_points, d.penetration.rescue_persistent_points);

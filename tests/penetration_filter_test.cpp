@@ -156,24 +156,48 @@ TEST(PenetrationRule, LiteralStepsBtoE) {
   p.own_surface_margin = 0.0;
   p.own_surface_margin_per_m = 0.0;
   p.behind_margin = 0.1;
+  p.require_both_sides = false;
   const PenetrationRule rule(p);
   const Eigen::Vector2d r(0, 0), point(2, 0);
   const double own = rule.ownMarginSq(2.0);
-  EXPECT_FALSE(rule.penetrates(r, point, {-1, 0}, own)) << "(b) behind the sensor";
-  EXPECT_FALSE(rule.penetrates(r, point, {1, 0.2}, own)) << "(c) off the beam";
-  EXPECT_TRUE(rule.penetrates(r, point, {1, 0.05}, own)) << "(d) crossed on the way";
-  EXPECT_TRUE(rule.penetrates(r, point, {2.05, 0}, own)) << "(e) just beyond p";
-  EXPECT_FALSE(rule.penetrates(r, point, {2.5, 0}, own)) << "beyond p, farther than the margin";
+  const auto on_beam = [&](Eigen::Vector2d q) { return rule.isConclusive(rule.evidence(r, point, q, own)); };
+  EXPECT_FALSE(on_beam({-1, 0})) << "(b) behind the sensor";
+  EXPECT_FALSE(on_beam({1, 0.2})) << "(c) off the beam";
+  EXPECT_TRUE(on_beam({1, 0.05})) << "(d) crossed on the way";
+  EXPECT_TRUE(on_beam({2.05, 0})) << "(e) just beyond p";
+  EXPECT_FALSE(on_beam({2.5, 0})) << "beyond p, farther than the margin";
+  EXPECT_EQ(rule.evidence(r, point, {1, 0.05}, own), PenetrationRule::kLeft | PenetrationRule::kOnBeam);
+  EXPECT_EQ(rule.evidence(r, point, {1, -0.05}, own), PenetrationRule::kRight | PenetrationRule::kOnBeam);
 }
 
 TEST(PenetrationRule, OwnSurfaceMarginProtectsThePointsWall) {
   PenetrationFilterParams p;
   p.own_surface_margin = 0.15;
   p.own_surface_margin_per_m = 0.0;
+  p.require_both_sides = false;
   const PenetrationRule rule(p);
   const Eigen::Vector2d r(0, 0), point(2, 0);
-  EXPECT_FALSE(rule.penetrates(r, point, {1.9, 0.0}, rule.ownMarginSq(2.0)));
-  EXPECT_TRUE(rule.penetrates(r, point, {1.8, 0.0}, rule.ownMarginSq(2.0)));
+  EXPECT_EQ(rule.evidence(r, point, {1.9, 0.0}, rule.ownMarginSq(2.0)), PenetrationRule::kNone);
+  EXPECT_NE(rule.evidence(r, point, {1.8, 0.0}, rule.ownMarginSq(2.0)), PenetrationRule::kNone);
+}
+
+// A wall crossed by the beam has cells on both sides of it; an edge or a leg
+// the beam passes beside has them on one side only.
+TEST(PenetrationRule, BothSidesTellACrossedWallFromAPassedEdge) {
+  PenetrationFilterParams p;
+  p.corridor_half_width = 0.03;
+  p.straddle_half_width = 0.1;
+  p.own_surface_margin = 0.15;
+  p.own_surface_margin_per_m = 0.0;
+  const PenetrationRule rule(p);
+  const Eigen::Vector2d r(0, 0), point(3, 0);
+  const double own = rule.ownMarginSq(3.0);
+  unsigned edge = rule.evidence(r, point, {1.5, 0.02}, own) | rule.evidence(r, point, {1.5, 0.07}, own);
+  EXPECT_FALSE(rule.isConclusive(edge)) << "cells on one side only";
+  unsigned wall = rule.evidence(r, point, {1.5, 0.02}, own) | rule.evidence(r, point, {1.5, -0.06}, own);
+  EXPECT_TRUE(rule.isConclusive(wall));
+  unsigned beside = rule.evidence(r, point, {1.5, 0.06}, own) | rule.evidence(r, point, {1.5, -0.06}, own);
+  EXPECT_FALSE(rule.isConclusive(beside)) << "no cell within the corridor";
 }
 
 }  // namespace

@@ -129,9 +129,9 @@ void ReferencePenetrationFilter::prepareJudging(const Eigen::Vector2d& /*origin*
 bool ReferencePenetrationFilter::isMisdetected(const Eigen::Vector2d& r,
                                                const Eigen::Vector2d& p) {
   const double own_sq = rule_.ownMarginSq((p - r).norm());
-  unsigned sides = PenetrationRule::kNone;
+  unsigned collected = PenetrationRule::kNone;
   for (const auto& q : obstacles_)  // steps a-f: every obstacle cell in turn
-    if (enoughSides(sides, rule_.penetrationSide(r, p, q, own_sq))) return true;
+    if (conclusive(collected, rule_.evidence(r, p, q, own_sq))) return true;
   return false;
 }
 
@@ -146,7 +146,7 @@ void FastPenetrationFilter::prepareJudging(const Eigen::Vector2d& origin) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
-  const double reach = rule_.corridorHalfWidth() + positionSlack() + rule_.behindMargin() + grid_.cellSize();
+  const double reach = rule_.outerHalfWidth() + positionSlack() + rule_.behindMargin() + grid_.cellSize();
   window_.build(grid_, grid_.cellOf(lo.array() - reach),
                 grid_.cellOf(hi.array() + reach));
 }
@@ -158,9 +158,9 @@ bool FastPenetrationFilter::isMisdetected(const Eigen::Vector2d& r, const Eigen:
   const double own_sq = rule_.ownMarginSq(length);
   // Penetrating cells project onto the beam between r and p + behind margin.
   const Eigen::Vector2d end = r + v * ((length + rule_.behindMargin()) / length);
-  unsigned sides = PenetrationRule::kNone;
-  return window_.anyAlongRay(r, end, rule_.corridorHalfWidth() + positionSlack(), [&](CellIndex c) {
-    return enoughSides(sides, rule_.penetrationSide(r, p, obstaclePosition(c), own_sq));
+  unsigned collected = PenetrationRule::kNone;
+  return window_.anyAlongRay(r, end, rule_.outerHalfWidth() + positionSlack(), [&](CellIndex c) {
+    return conclusive(collected, rule_.evidence(r, p, obstaclePosition(c), own_sq));
   });
 }
 

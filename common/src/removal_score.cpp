@@ -42,4 +42,16 @@ void RemovalScore::add(const Scan& scan, std::span<const std::uint8_t> labels) {
   }
 }
 
+void RemovalScore::add(const RemovalScore& o) {
+  frames_ += o.frames_;
+  truth_frames_ += o.truth_frames_;
+  for (std::size_t c = 0; c < label_counts_.size(); ++c) label_counts_[c] += o.label_counts_[c];
+  jump_.add(o.jump_);
+  misdetected_.add(o.misdetected_);
+  valid_truth_ += o.valid_truth_;
+  valid_deleted_ += o.valid_deleted_;
+  thin_truth_ += o.thin_truth_;
+  thin_kept_ += o.thin_kept_;
+}
+
 }  // namespace scanfilter

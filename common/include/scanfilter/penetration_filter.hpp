@@ -62,10 +62,10 @@ class PenetrationFilter {
   }
   // How far q can lie from its cell's centre: widens the fast walk's band.
   double positionSlack() const { return params_.obstacle_at_centroid ? grid_.cellSize() * std::sqrt(0.5) : 0.0; }
-  // Collects the sides of penetrating cells; true once they are enough.
-  bool enoughSides(unsigned& sides, PenetrationRule::Side side) const {
-    sides |= side;
-    return params_.require_both_sides ? sides == PenetrationRule::kBothSides : sides != PenetrationRule::kNone;
+  // Adds one cell's evidence; true once the point is a misdetection.
+  bool conclusive(unsigned& collected, unsigned evidence) const {
+    collected |= evidence;
+    return rule_.isConclusive(collected);
   }
 
   PenetrationFilterParams params_;

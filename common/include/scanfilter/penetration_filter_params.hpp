@@ -18,8 +18,11 @@ struct PenetrationFilterParams {
   // Beyond the paper: a beam that really passes through a surface has that
   // surface's cells on both of its sides; one passing beside an edge, a door
   // jamb or a leg (within the pose error) has them on one side only. When
-  // true, a point is misdetected only if penetrating cells lie on both sides.
+  // true, a point is misdetected only if, besides a cell on the beam (within
+  // the corridor), penetrating cells lie on both sides of the beam within
+  // `straddle_half_width`.
   bool require_both_sides = true;
+  double straddle_half_width = 0.1;  // m (the paper's 2·W_g)
   double own_surface_margin = 0.15;    // m, cells nearer the point are its own surface
   double own_surface_margin_per_m = 0.02;  // m per m of range added to that margin
   double behind_margin = 0.0;       // m, step (e) read literally: cells this near beyond p mark it

@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Core>
@@ -11,11 +12,18 @@ namespace scanfilter {
 // implementations so that they agree to the last bit.
 class PenetrationRule {
  public:
+  // What one obstacle position says about a point, as bits: on which side of
+  // the beam it lies, and whether it lies within the corridor (on the beam).
+  enum Evidence : unsigned { kNone = 0, kLeft = 1, kRight = 2, kOnBeam = 4 };
+
   explicit PenetrationRule(const PenetrationFilterParams& params)
       : corridor_sq_(params.corridor_half_width * params.corridor_half_width),
+        outer_(params.require_both_sides ? std::max(params.corridor_half_width, params.straddle_half_width)
+                                         : params.corridor_half_width),
         own_margin_(params.own_surface_margin),
         own_margin_per_m_(params.own_surface_margin_per_m),
-        behind_sq_(params.behind_margin * params.behind_margin) {}
+        behind_sq_(params.behind_margin * params.behind_margin),
+        require_both_sides_(params.require_both_sides) {}
 
   // Squared own-surface margin for a beam of length `length` (m).
   double ownMarginSq(double length) const {
@@ -23,45 +31,47 @@ class PenetrationRule {
     return m * m;
   }
 
-  // Which side of the beam r->p a penetrating obstacle lies on.
-  enum Side : unsigned { kNone = 0, kLeft = 1, kRight = 2, kBothSides = kLeft | kRight };
-
-  // The side of the beam on which obstacle position q makes the point p, seen
-  // from sensor r, a misdetection; kNone when it does not. `own_sq` is
-  // ownMarginSq(|p - r|).
-  Side penetrationSide(const Eigen::Vector2d& r, const Eigen::Vector2d& p, const Eigen::Vector2d& q,
-                       double own_sq) const {
-    if (!penetrates(r, p, q, own_sq)) return kNone;
-    const Eigen::Vector2d v = p - r, w = q - r;
-    return v.x() * w.y() - v.y() * w.x() >= 0.0 ? kLeft : kRight;
-  }
-
-  // True when obstacle position q makes the point p, seen from sensor r, a
-  // misdetection (steps b-e). `own_sq` is ownMarginSq(|p - r|).
-  bool penetrates(const Eigen::Vector2d& r, const Eigen::Vector2d& p, const Eigen::Vector2d& q,
-                  double own_sq) const {
+  // Evidence of obstacle position q against the point p seen from sensor r
+  // (steps b-e; `own_sq` is ownMarginSq(|p - r|)); kNone when q says nothing.
+  unsigned evidence(const Eigen::Vector2d& r, const Eigen::Vector2d& p, const Eigen::Vector2d& q,
+                    double own_sq) const {
     const Eigen::Vector2d v = p - r;
     const Eigen::Vector2d w = q - r;
     const double along = v.dot(w);
-    if (along <= 0.0) return false;  // (b) |θ1| >= 90°: q is behind the sensor
+    if (along <= 0.0) return kNone;  // (b) |θ1| >= 90°: q is behind the sensor
     const double length_sq = v.squaredNorm();
     const double cross = v.x() * w.y() - v.y() * w.x();
-    if (cross * cross > corridor_sq_ * length_sq) return false;  // (c) d1: q is off the beam
+    const double d1_sq_scaled = cross * cross;  // d1² · |v|²
+    if (d1_sq_scaled > outer_ * outer_ * length_sq) return kNone;  // (c) q is off the beam
     const double d2_sq = (p - q).squaredNorm();
-    if (d2_sq < own_sq) return false;  // q is on the surface p lies on
-    if (along < length_sq) return true;  // (d) |θ2| < 90°: the beam passes q before p
-    return d2_sq < behind_sq_;          // (e) as printed: q just beyond p
+    if (d2_sq < own_sq) return kNone;  // q is on the surface p lies on
+    // (d) |θ2| < 90°: the beam passes q before p; (e) as printed: q just beyond p.
+    if (along >= length_sq && d2_sq >= behind_sq_) return kNone;
+    unsigned bits = cross >= 0.0 ? kLeft : kRight;
+    if (d1_sq_scaled <= corridor_sq_ * length_sq) bits |= kOnBeam;
+    return bits;
   }
 
-  // How far beyond p a penetrating cell can lie, for the beam walk's bounds.
-  double corridorHalfWidth() const { return std::sqrt(corridor_sq_); }
+  // True once the evidence collected so far makes the point a misdetection:
+  // a cell on the beam, and, when both sides are required, cells on both of
+  // its sides within the straddle width.
+  bool isConclusive(unsigned collected) const {
+    if (!(collected & kOnBeam)) return false;
+    return !require_both_sides_ || (collected & (kLeft | kRight)) == (kLeft | kRight);
+  }
+
+  // How far off the beam and beyond its point evidence can lie: the beam
+  // walk's bounds.
+  double outerHalfWidth() const { return outer_; }
   double behindMargin() const { return std::sqrt(behind_sq_); }
 
  private:
   double corridor_sq_;
+  double outer_;
   double own_margin_;
   double own_margin_per_m_;
   double behind_sq_;
+  bool require_both_sides_;
 };
 
 }  // namespace scanfilter

@@ -18,6 +18,12 @@ struct RemovalClassScore {
 
   double recall() const { return ratio(truth_removed, truth); }
   double precision() const { return ratio(labelled_artefact, labelled); }
+  void add(const RemovalClassScore& o) {
+    truth += o.truth;
+    truth_removed += o.truth_removed;
+    labelled += o.labelled;
+    labelled_artefact += o.labelled_artefact;
+  }
   double f1() const {
     const double p = precision(), r = recall();
     return p + r > 0.0 ? 2.0 * p * r / (p + r) : 0.0;
@@ -30,6 +36,8 @@ struct RemovalClassScore {
 class RemovalScore {
  public:
   void add(const Scan& scan, std::span<const std::uint8_t> labels);
+  // Merges another score (e.g. of another log) into this one.
+  void add(const RemovalScore& other);
 
   std::size_t frames() const { return frames_; }
   std::size_t labelCount(PointCode code) const { return label_counts_[static_cast<std::size_t>(code)]; }
