@@ -60,13 +60,13 @@ void FastJumpFilter::prepare(const Scan& scan) {
     if (!free_[i]) next_free_[i] = i + 1;
 
   // A disc of radius k·d around a point at range d subtends asin(k) from the
-  // sensor; two beams of margin absorb rounding. k >= 1 means no bound.
+  // sensor; one beam of margin absorbs rounding. k >= 1 means no bound.
   const double k = rule_.radiusPerMetre();
   const double increment = std::abs(scan.angle_increment);
   if (k >= 1.0 || increment <= 0.0) {
     half_window_ = n;
   } else {
-    const double beams = std::floor(std::asin(k) / increment) + 2.0;
+    const double beams = std::floor(std::asin(k) / increment) + 1.0;
     half_window_ = beams >= n ? n : static_cast<std::uint32_t>(beams);
   }
 }
@@ -90,6 +90,12 @@ void FastJumpFilter::claim(std::uint32_t i) {
 
 void FastJumpFilter::visitFreeIn(std::uint32_t from, std::uint32_t to, std::uint32_t member,
                                  double radius_sq) {
+  // A short window is cheaper to scan than to skip through.
+  if (to - from < kShortWindow) {
+    for (std::uint32_t j = from; j <= to; ++j)
+      if (free_[j] && isNeighbour(member, j, radius_sq)) claim(j);
+    return;
+  }
   for (std::uint32_t j = nextFree(from); j <= to; j = nextFree(j + 1)) {
     if (isNeighbour(member, j, radius_sq)) claim(j);
   }
