@@ -120,28 +120,26 @@ int main(int argc, char** argv) {
   std::printf("\nstage 2 (step 2 with stage 1's best)\n");
   const TwoStepFilterParams stage1 = best;
   best_obj = -1.0;
-  for (double corridor : {0.015, 0.025, 0.035})
-    for (double straddle : {0.075, 0.1})
+  for (double straddle : {0.035, 0.05, 0.075})
+    for (double gap : {0.06, 0.08, 0.12})
       for (int obs : {2, 3})
-        for (double rescue_radius : {0.03, 0.05, 0.08})
-          for (int rescue_count : {2, 3}) {
-            TwoStepFilterParams p = stage1;
-            p.penetration.corridor_half_width = corridor;
-            p.penetration.straddle_half_width = straddle;
-            p.penetration.obstacle_threshold = obs;
-            p.penetration.rescue_radius = rescue_radius;
-            p.penetration.rescue_min_count = rescue_count;
-            const SceneScores s = score(tune, p);
-            const double obj = objective(s, false);
-            char tag[160];
-            std::snprintf(tag, sizeof tag, "corridor %.3f straddle %.3f obs_th %d rescue %.2f m n %d", corridor,
-                          straddle, obs, rescue_radius, rescue_count);
-            print(tag, s, obj);
-            if (obj > best_obj) best_obj = obj, best = p;
-          }
+        for (double rescue_radius : {0.05, 0.08}) {
+          TwoStepFilterParams p = stage1;
+          p.penetration.straddle_half_width = straddle;
+          p.penetration.surface_gap = gap;
+          p.penetration.obstacle_threshold = obs;
+          p.penetration.rescue_radius = rescue_radius;
+          const SceneScores s = score(tune, p);
+          const double obj = objective(s, false);
+          char tag[160];
+          std::snprintf(tag, sizeof tag, "straddle %.3f gap %.2f obs_th %d rescue %.2f m", straddle, gap, obs,
+                        rescue_radius);
+          print(tag, s, obj);
+          if (obj > best_obj) best_obj = obj, best = p;
+        }
   const auto& b = best.penetration;
-  std::printf("stage 2 best: corridor %.3f straddle %.3f obs_th %d rescue %.2f m n %d\n", b.corridor_half_width,
-              b.straddle_half_width, b.obstacle_threshold, b.rescue_radius, b.rescue_min_count);
+  std::printf("stage 2 best: straddle %.3f gap %.2f obs_th %d rescue %.2f m\n", b.straddle_half_width,
+              b.surface_gap, b.obstacle_threshold, b.rescue_radius);
 
   std::printf("\nbest on the held-out seeds\n");
   for (auto seed : test_seeds) {

@@ -31,6 +31,7 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(s.penetration.obstacle_at_centroid, d.penetration.obstacle_at_centroid);
   EXPECT_EQ(s.penetration.require_both_sides, d.penetration.require_both_sides);
   EXPECT_EQ(s.penetration.straddle_half_width, d.penetration.straddle_half_width);
+  EXPECT_EQ(s.penetration.surface_gap, d.penetration.surface_gap);
   EXPECT_EQ(s.penetration.behind_margin, d.penetration.behind_margin);
   EXPECT_EQ(s.penetration.pose_jump_reset, d.penetration.pose_jump_reset);
   EXPECT_EQ(s.penetration.max_cache_frames, d.penetration.max_cache_frames);

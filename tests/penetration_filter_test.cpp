@@ -1,8 +1,10 @@
 #include <algorithm>
+#include <random>
 
 #include <gtest/gtest.h>
 
 #include "scan_builder.hpp"
+#include "scanfilter/penetration_evidence.hpp"
 #include "scanfilter/penetration_filter.hpp"
 #include "scanfilter/point_code.hpp"
 
@@ -39,10 +41,16 @@ class BothFilters {
 
 const World kRoom = World{}.wall({3, -3}, {3, 3}).wall({-3, -3}, {3, -3}).wall({-3, 3}, {3, 3}).wall({-3, -3}, {-3, 3});
 
-// Feeds `frames` scans of the room from slightly different poses.
+// Feeds `frames` scans of the room from slightly different poses, with ±1 cm
+// of deterministic range noise, as a real sensor gives.
 void warmUp(BothFilters& filters, const SensorInfo& sensor, int frames) {
-  for (int k = 0; k < frames; ++k)
-    filters.apply(castScan(kRoom, {0.02 * k, 0.0, 0.0}, sensor, 360, 0.1 * k), sensor);
+  std::mt19937 rng(42);
+  std::uniform_real_distribution<double> noise(-0.01, 0.01);
+  for (int k = 0; k < frames; ++k) {
+    Scan scan = castScan(kRoom, {0.02 * k, 0.0, 0.0}, sensor, 360, 0.1 * k);
+    for (auto& r : scan.ranges) r += noise(rng);
+    filters.apply(scan, sensor);
+  }
 }
 
 TEST(PenetrationFilter, WarmUpKeepsEverything) {
@@ -160,7 +168,7 @@ TEST(PenetrationRule, LiteralStepsBtoE) {
   const PenetrationRule rule(p);
   const Eigen::Vector2d r(0, 0), point(2, 0);
   const double own = rule.ownMarginSq(2.0);
-  const auto on_beam = [&](Eigen::Vector2d q) { return rule.isConclusive(rule.evidence(r, point, q, own)); };
+  const auto on_beam = [&](Eigen::Vector2d q) { return (rule.evidence(r, point, q, own) & PenetrationRule::kOnBeam) != 0; };
   EXPECT_FALSE(on_beam({-1, 0})) << "(b) behind the sensor";
   EXPECT_FALSE(on_beam({1, 0.2})) << "(c) off the beam";
   EXPECT_TRUE(on_beam({1, 0.05})) << "(d) crossed on the way";
@@ -181,23 +189,38 @@ TEST(PenetrationRule, OwnSurfaceMarginProtectsThePointsWall) {
   EXPECT_NE(rule.evidence(r, point, {1.8, 0.0}, rule.ownMarginSq(2.0)), PenetrationRule::kNone);
 }
 
-// A wall crossed by the beam has cells on both sides of it; an edge or a leg
-// the beam passes beside has them on one side only.
-TEST(PenetrationRule, BothSidesTellACrossedWallFromAPassedEdge) {
+// A wall crossed by the beam has neighbouring cells on both sides of it; an
+// edge or a leg the beam passes beside has them on one side only, and two
+// objects the beam passes between are too far apart.
+TEST(PenetrationEvidence, BothSidesTellACrossedWallFromAPassedEdge) {
   PenetrationFilterParams p;
-  p.corridor_half_width = 0.03;
-  p.straddle_half_width = 0.1;
+  p.straddle_half_width = 0.05;
+  p.surface_gap = 0.08;
   p.own_surface_margin = 0.15;
   p.own_surface_margin_per_m = 0.0;
   const PenetrationRule rule(p);
   const Eigen::Vector2d r(0, 0), point(3, 0);
   const double own = rule.ownMarginSq(3.0);
-  unsigned edge = rule.evidence(r, point, {1.5, 0.02}, own) | rule.evidence(r, point, {1.5, 0.07}, own);
-  EXPECT_FALSE(rule.isConclusive(edge)) << "cells on one side only";
-  unsigned wall = rule.evidence(r, point, {1.5, 0.02}, own) | rule.evidence(r, point, {1.5, -0.06}, own);
-  EXPECT_TRUE(rule.isConclusive(wall));
-  unsigned beside = rule.evidence(r, point, {1.5, 0.06}, own) | rule.evidence(r, point, {1.5, -0.06}, own);
-  EXPECT_FALSE(rule.isConclusive(beside)) << "no cell within the corridor";
+  const auto conclusive = [&](std::vector<Eigen::Vector2d> cells) {
+    PenetrationEvidence evidence(rule, p.surface_gap);
+    bool result = false;
+    for (const auto& q : cells) result = evidence.add(rule.evidence(r, point, q, own), q) || result;
+    return result;
+  };
+  EXPECT_FALSE(conclusive({{1.5, 0.01}, {1.5, 0.04}})) << "an edge: one side only";
+  EXPECT_TRUE(conclusive({{1.5, 0.02}, {1.5, -0.03}})) << "a wall: neighbours across the beam";
+  EXPECT_TRUE(conclusive({{1.5, -0.03}, {1.5, 0.02}})) << "order does not matter";
+  EXPECT_FALSE(conclusive({{1.2, 0.02}, {1.8, -0.03}})) << "two objects, 0.6 m apart";
+  EXPECT_FALSE(conclusive({{1.5, 0.06}, {1.5, -0.06}})) << "both beyond the straddle width";
+}
+
+TEST(PenetrationEvidence, PaperModeNeedsOneCellOnTheBeam) {
+  PenetrationFilterParams p;
+  p.require_both_sides = false;
+  p.corridor_half_width = 0.1;
+  const PenetrationRule rule(p);
+  PenetrationEvidence evidence(rule, p.surface_gap);
+  EXPECT_TRUE(evidence.add(rule.evidence({0, 0}, {3, 0}, {1.5, 0.05}, rule.ownMarginSq(3.0)), {1.5, 0.05}));
 }
 
 }  // namespace

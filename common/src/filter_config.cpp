@@ -130,6 +130,7 @@ void readPenetration(Section& s, FilterConfig& config) {
   s.read("obstacle_at_centroid", p.obstacle_at_centroid);
   s.read("require_both_sides", p.require_both_sides);
   s.read("straddle_half_width", p.straddle_half_width);
+  s.read("surface_gap", p.surface_gap);
   s.read("own_surface_margin", p.own_surface_margin);
   s.read("own_surface_margin_per_m", p.own_surface_margin_per_m);
   s.read("behind_margin", p.behind_margin);
@@ -147,6 +148,7 @@ void readPenetration(Section& s, FilterConfig& config) {
   s.requireRange("own_surface_margin", p.own_surface_margin, 0.0, 1e9, "a value >= 0 (m)");
   s.requireRange("own_surface_margin_per_m", p.own_surface_margin_per_m, 0.0, 1e9, "a value >= 0");
   s.requireRange("straddle_half_width", p.straddle_half_width, 0.0, 1e9, "a value >= 0 (m)");
+  s.requireRange("surface_gap", p.surface_gap, 0.0, 1e9, "a value >= 0 (m)");
   s.requireRange("behind_margin", p.behind_margin, 0.0, 1e9, "a value >= 0 (m)");
   s.requireRange("pose_jump_reset", p.pose_jump_reset, 0.0, 1e9, "a value > 0 (m)");
   s.requireRange("max_cache_frames", static_cast<double>(p.max_cache_frames), 1, 1e7, "an integer >= 1");

@@ -13,6 +13,7 @@ namespace scanfilter {
 PenetrationFilter::PenetrationFilter(const PenetrationFilterParams& params)
     : params_(params),
       rule_(params),
+      evidence_along_beam_(rule_, params.surface_gap),
       grid_(params.cell_size, params.obstacle_threshold),
       evidence_(params.cell_size) {}
 
@@ -129,9 +130,9 @@ void ReferencePenetrationFilter::prepareJudging(const Eigen::Vector2d& /*origin*
 bool ReferencePenetrationFilter::isMisdetected(const Eigen::Vector2d& r,
                                                const Eigen::Vector2d& p) {
   const double own_sq = rule_.ownMarginSq((p - r).norm());
-  unsigned collected = PenetrationRule::kNone;
+  evidence_along_beam_.reset();
   for (const auto& q : obstacles_)  // steps a-f: every obstacle cell in turn
-    if (conclusive(collected, rule_.evidence(r, p, q, own_sq))) return true;
+    if (evidence_along_beam_.add(rule_.evidence(r, p, q, own_sq), q)) return true;
   return false;
 }
 
@@ -158,9 +159,10 @@ bool FastPenetrationFilter::isMisdetected(const Eigen::Vector2d& r, const Eigen:
   const double own_sq = rule_.ownMarginSq(length);
   // Penetrating cells project onto the beam between r and p + behind margin.
   const Eigen::Vector2d end = r + v * ((length + rule_.behindMargin()) / length);
-  unsigned collected = PenetrationRule::kNone;
+  evidence_along_beam_.reset();
   return window_.anyAlongRay(r, end, rule_.outerHalfWidth() + positionSlack(), [&](CellIndex c) {
-    return conclusive(collected, rule_.evidence(r, p, obstaclePosition(c), own_sq));
+    const Eigen::Vector2d q = obstaclePosition(c);
+    return evidence_along_beam_.add(rule_.evidence(r, p, q, own_sq), q);
   });
 }
 

@@ -12,6 +12,7 @@
 #include "scanfilter/implementation.hpp"
 #include "scanfilter/obstacle_window.hpp"
 #include "scanfilter/penetration_filter_params.hpp"
+#include "scanfilter/penetration_evidence.hpp"
 #include "scanfilter/penetration_grid.hpp"
 #include "scanfilter/penetration_rule.hpp"
 #include "scanfilter/scan.hpp"
@@ -62,14 +63,10 @@ class PenetrationFilter {
   }
   // How far q can lie from its cell's centre: widens the fast walk's band.
   double positionSlack() const { return params_.obstacle_at_centroid ? grid_.cellSize() * std::sqrt(0.5) : 0.0; }
-  // Adds one cell's evidence; true once the point is a misdetection.
-  bool conclusive(unsigned& collected, unsigned evidence) const {
-    collected |= evidence;
-    return rule_.isConclusive(collected);
-  }
 
   PenetrationFilterParams params_;
   PenetrationRule rule_;
+  PenetrationEvidence evidence_along_beam_;
   PenetrationGrid grid_;      // points the filter kept: the obstacle votes
   PenetrationGrid evidence_;  // every return, kept or not: for the rescue
   std::vector<Eigen::Vector2d> points_;  // world points of the frame being judged

@@ -15,14 +15,15 @@ struct PenetrationFilterParams {
   // Where an obstacle cell is: the paper's q_n is the cell centre; the mean of
   // the points it counted puts a thin leg or an edge where it really is.
   bool obstacle_at_centroid = true;
-  // Beyond the paper: a beam that really passes through a surface has that
-  // surface's cells on both of its sides; one passing beside an edge, a door
-  // jamb or a leg (within the pose error) has them on one side only. When
-  // true, a point is misdetected only if, besides a cell on the beam (within
-  // the corridor), penetrating cells lie on both sides of the beam within
-  // `straddle_half_width`.
+  // Beyond the paper: a beam that really passes through a surface passes
+  // between neighbouring cells of it, one on each side; one passing beside an
+  // edge, a door jamb or a leg (within the pose error) has them on one side
+  // only. When true, a point is misdetected only if two penetrating cells
+  // within `straddle_half_width` of the beam, on opposite sides, lie at most
+  // `surface_gap` apart; the corridor then plays no part.
   bool require_both_sides = true;
-  double straddle_half_width = 0.075;  // m
+  double straddle_half_width = 0.05;  // m
+  double surface_gap = 0.08;          // m
   double own_surface_margin = 0.15;    // m, cells nearer the point are its own surface
   double own_surface_margin_per_m = 0.02;  // m per m of range added to that margin
   double behind_margin = 0.0;       // m, step (e) read literally: cells this near beyond p mark it

@@ -13,7 +13,8 @@ namespace scanfilter {
 class PenetrationRule {
  public:
   // What one obstacle position says about a point, as bits: on which side of
-  // the beam it lies, and whether it lies within the corridor (on the beam).
+  // the beam it lies (within the straddle width), and whether it lies within
+  // the corridor (on the beam).
   enum Evidence : unsigned { kNone = 0, kLeft = 1, kRight = 2, kOnBeam = 4 };
 
   explicit PenetrationRule(const PenetrationFilterParams& params)
@@ -52,13 +53,7 @@ class PenetrationRule {
     return bits;
   }
 
-  // True once the evidence collected so far makes the point a misdetection:
-  // a cell on the beam, and, when both sides are required, cells on both of
-  // its sides within the straddle width.
-  bool isConclusive(unsigned collected) const {
-    if (!(collected & kOnBeam)) return false;
-    return !require_both_sides_ || (collected & (kLeft | kRight)) == (kLeft | kRight);
-  }
+  bool requiresBothSides() const { return require_both_sides_; }
 
   // How far off the beam and beyond its point evidence can lie: the beam
   // walk's bounds.
