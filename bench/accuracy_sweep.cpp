@@ -90,7 +90,10 @@ int main(int argc, char** argv) {
   double best_obj = -1.0;
   std::printf("\nstage 1 (step 1 + rescue, step 2 judging off: obstacle_threshold huge)\n");
   if (!skip_stage1)
-  for (double alpha : {0.3, 0.4, 0.6, 1.0})
+  // α >= 0.5: below it the neighbour radius is shorter than the beam spacing
+  // on a surface at θK, so walls are cut up well before the incidence θK
+  // says is allowed (docs/accuracy.md shows what α = 0.3 and 0.4 do).
+  for (double alpha : {0.6, 0.8, 1.0, 1.4})
     for (double l_min : {0.01, 0.02})
       for (double l_max : {0.05, 0.1, 0.2})
         for (int radius : {-1, 1})  // -1: no rescue (the paper)

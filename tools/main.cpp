@@ -16,7 +16,9 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("scanfilter ") + SCANFILTER_VERSION);
   app.require_subcommand(1);
   std::string log_level = "warn";
-  app.add_option("--log-level", log_level, "trace, debug, info, warn, error or off")->capture_default_str();
+  app.add_option("--log-level", log_level, "trace, debug, info, warn, error or off")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}));
 
   SimulateOptions sim;
   auto* simulate = app.add_subcommand("simulate", "Simulate a labelled scan log of a scene");
@@ -51,7 +53,6 @@ int main(int argc, char** argv) {
 
   CLI11_PARSE(app, argc, argv);
   spdlog::set_level(spdlog::level::from_str(log_level));
-  spdlog::set_default_logger(spdlog::default_logger());
   try {
     if (*simulate) return runSimulate(sim);
     if (*rep) return runReplay(replay);

@@ -11,7 +11,7 @@ enum class SpanRange { kClusterMean, kSeed };
 // the sweep in docs/accuracy.md; config/filter.yaml documents every key.
 struct JumpFilterParams {
   double angular_accuracy_deg = 1.0;  // Δθ, the sensor's angular accuracy
-  double alpha = 0.4;                 // α, magnification of the neighbour radius
+  double alpha = 0.6;                 // α, magnification of the neighbour radius
   double theta_k_deg = 70.0;          // θK, largest surface-to-tangent angle allowed
   double l_min = 0.02;                // m, minimum tangential length at d_min
   double l_max = 0.10;                // m, minimum tangential length at d_max

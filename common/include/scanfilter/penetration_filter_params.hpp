@@ -10,7 +10,7 @@ struct PenetrationFilterParams {
   double cell_size = 0.05;          // m, W_g
   double frame_lifetime = 4.0;      // s, T_max: cached frames older than this leave
   int min_frames = 5;               // F_Lmin: frames seen before anything is judged
-  int obstacle_threshold = 3;       // obs_th: a cell counting more points is an obstacle
+  int obstacle_threshold = 2;       // obs_th: a cell counting more points is an obstacle
   double corridor_half_width = 0.015;  // m, step (c): cells farther off the beam are ignored
   // Where an obstacle cell is: the paper's q_n is the cell centre; the mean of
   // the points it counted puts a thin leg or an edge where it really is.
@@ -22,8 +22,8 @@ struct PenetrationFilterParams {
   // within `straddle_half_width` of the beam, on opposite sides, lie at most
   // `surface_gap` apart; the corridor then plays no part.
   bool require_both_sides = true;
-  double straddle_half_width = 0.05;  // m
-  double surface_gap = 0.08;          // m
+  double straddle_half_width = 0.075;  // m
+  double surface_gap = 0.12;          // m
   double own_surface_margin = 0.15;    // m, cells nearer the point are its own surface
   double own_surface_margin_per_m = 0.02;  // m per m of range added to that margin
   double behind_margin = 0.0;       // m, step (e) read literally: cells this near beyond p mark it
