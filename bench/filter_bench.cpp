@@ -3,7 +3,8 @@
 // Jump filter: one simulated hall frame at 360, 1,080 and 3,600 beams.
 // Penetration filter: one frame judged against a cache that holds every frame
 // of a tour of 100 m² or 1,000 m² of rooms (T_max = ∞), so the reference's
-// obstacle set grows with the area while the fast beam walk should not.
+// obstacle set grows with the area while the fast beam walk should not. The
+// judged frame is taken in the corner room both areas share.
 #include <cmath>
 #include <map>
 #include <memory>
@@ -94,9 +95,9 @@ ExploredState& explored(Implementation impl, int area_m2, int beams) {
       if (!record.scan.hasReturn(i)) labels[i] = static_cast<std::uint8_t>(PointCode::kNoReturn);
     state.filter->apply(record.scan, state.sensor, labels);
   }
-  // The judged frame: the tour's last pose, at the requested resolution.
-  scene.lidar.beams = beams;
-  state.frame = simulatedFrame(scene, beams, static_cast<int>(simulator.frameCount()) - 1);
+  // The judged frame: the tour's first pose, in the corner room that both
+  // areas share, so the two areas judge the same geometry.
+  state.frame = simulatedFrame(scene, beams, 0);
   state.filter->grid().forEachCellAbove(p.obstacle_threshold, [&](CellIndex, int) { ++state.obstacle_cells; });
   return state;
 }

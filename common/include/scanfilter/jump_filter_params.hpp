@@ -13,7 +13,7 @@ struct JumpFilterParams {
   double angular_accuracy_deg = 1.0;  // Δθ, the sensor's angular accuracy
   double alpha = 0.6;                 // α, magnification of the neighbour radius
   double theta_k_deg = 70.0;          // θK, largest surface-to-tangent angle allowed
-  double l_min = 0.02;                // m, minimum tangential length at d_min
+  double l_min = 0.01;                // m, minimum tangential length at d_min
   double l_max = 0.10;                // m, minimum tangential length at d_max
   double d_min = 0.15;                // m, sensor's minimum range
   double d_max = 6.0;                 // m, sensor's maximum range

@@ -36,11 +36,11 @@ struct PenetrationFilterParams {
   // persistent evidence that a jump point, which moves with the viewpoint,
   // does not leave. Off reproduces the paper.
   bool rescue_persistent_points = true;
-  int rescue_min_count = 3;
+  int rescue_min_count = 5;
   // Evidence counts the cached returns of the cells whose centroid lies within
   // this distance of the point: a thin leg's returns pile up within a few cm,
   // a jump point lies off every surface by more than that.
-  double rescue_radius = 0.05;  // m
+  double rescue_radius = 0.08;  // m
 };
 
 }  // namespace scanfilter
