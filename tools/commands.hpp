@@ -35,6 +35,12 @@ struct InfoOptions {
   double carmen_range_max = 80.0;
 };
 
+struct DiffOptions {
+  std::string first;
+  std::string second;
+};
+
+int runDiff(const DiffOptions& options);
 int runSimulate(const SimulateOptions& options);
 int runReplay(const ReplayOptions& options);
 int runRender(const RenderOptionsCli& options);

@@ -51,6 +51,11 @@ int main(int argc, char** argv) {
   inf->add_option("input", info.input, "scan log or CARMEN log")->required()->check(CLI::ExistingFile);
   inf->add_option("--carmen-range-max", info.carmen_range_max, "CARMEN logs: ranges at or above this are no return (m)")->capture_default_str();
 
+  DiffOptions diff;
+  auto* dif = app.add_subcommand("diff", "Compare the labels of two scan logs scan by scan (exit 1 if they differ)");
+  dif->add_option("first", diff.first, "scan log with labels")->required()->check(CLI::ExistingFile);
+  dif->add_option("second", diff.second, "scan log with labels")->required()->check(CLI::ExistingFile);
+
   CLI11_PARSE(app, argc, argv);
   spdlog::set_level(spdlog::level::from_str(log_level));
   try {
@@ -58,6 +63,7 @@ int main(int argc, char** argv) {
     if (*rep) return runReplay(replay);
     if (*ren) return runRender(render);
     if (*inf) return runInfo(info);
+    if (*dif) return runDiff(diff);
   } catch (const scanfilter::InputError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;

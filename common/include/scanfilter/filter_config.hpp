@@ -2,6 +2,8 @@
 #include <optional>
 #include <string>
 
+#include <yaml-cpp/yaml.h>
+
 #include "scanfilter/sensor_info.hpp"
 #include "scanfilter/two_step_filter.hpp"
 
@@ -24,5 +26,8 @@ struct FilterConfig {
 // (a misspelt key would otherwise be silently ignored).
 FilterConfig loadFilterConfig(const std::string& path);
 FilterConfig parseFilterConfig(const std::string& yaml_text, const std::string& name);
+// The same from an already parsed document whose top level holds only the
+// jump_filter and penetration_filter sections.
+FilterConfig filterConfigFromYaml(const YAML::Node& root, const std::string& name);
 
 }  // namespace scanfilter

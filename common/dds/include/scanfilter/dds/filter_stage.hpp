@@ -1,0 +1,55 @@
+#pragma once
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "scanfilter/dds/dds_participant.hpp"
+#include "scanfilter/dds/rate_limited_log.hpp"
+#include "scanfilter/dds/scan_message.hpp"
+#include "scanfilter/dds/service_config.hpp"
+#include "scanfilter/dds/service_metrics.hpp"
+#include "scanfilter/dds/typed_reader.hpp"
+#include "scanfilter/dds/typed_writer.hpp"
+#include "scanfilter_typesPubSubTypes.h"
+
+namespace scanfilter::dds_io {
+
+// One filtering step as a service: takes labelled scans from one topic, runs
+// the step, publishes them with the step's labels on another, and meters it
+// all. Invalid samples are counted, logged once per kind, and dropped.
+class FilterStage {
+ public:
+  // The step: reads the scan and its labels so far, writes the new labels.
+  using Step = std::function<void(const Scan&, const SensorInfo&, std::span<std::uint8_t> labels)>;
+  // Called after each publish (the penetration filter also sends a LaserScan).
+  using AfterPublish = std::function<void(const LabeledScanMsg&)>;
+
+  FilterStage(DdsParticipant& participant, const ServiceSettings& settings, ServiceMetrics& metrics,
+              std::string stage, const std::string& input_topic, const std::string& output_topic, Step step,
+              AfterPublish after_publish = {});
+
+  std::uint64_t processed() const { return processed_.load(); }
+  int matchedReaders() const { return writer_.matchedReaders(); }
+  int matchedWriters() const { return reader_.matchedWriters(); }
+
+ private:
+  void onSample(LabeledScanMsg& msg);
+  void countRemoved(std::span<const std::uint8_t> before, std::span<const std::uint8_t> after);
+
+  ServiceMetrics& metrics_;
+  std::string stage_;
+  Step step_;
+  AfterPublish after_publish_;
+  OncePerKindLog rejections_;
+  Scan scan_;
+  SensorInfo sensor_;
+  std::vector<std::uint8_t> labels_before_;
+  std::atomic<std::uint64_t> processed_{0};
+  TypedWriter<scanfilter_msgs::msg::dds_::LabeledScan_PubSubType> writer_;
+  TypedReader<scanfilter_msgs::msg::dds_::LabeledScan_PubSubType> reader_;  // last: callbacks see a ready writer
+};
+
+}  // namespace scanfilter::dds_io

@@ -1,0 +1,23 @@
+#pragma once
+#include <fastdds/dds/publisher/qos/DataWriterQos.hpp>
+#include <fastdds/dds/subscriber/qos/DataReaderQos.hpp>
+
+namespace scanfilter::dds_io {
+
+// QoS of the scan streams between the pipeline's stages: reliable and
+// keep-all with a bounded queue, so a fast producer is slowed down by the
+// slowest consumer (write() blocks) instead of losing scans.
+struct StreamQos {
+  int queue_depth = 64;           // samples buffered per writer and reader
+  double max_blocking_s = 5.0;    // how long write() waits for room before failing
+};
+
+eprosima::fastdds::dds::DataWriterQos losslessWriterQos(const StreamQos& q);
+// Samples a lossless writer may have unacknowledged (TypedWriter::setFlowControl).
+inline int flowControlWindow(const StreamQos& q) { return q.queue_depth; }
+eprosima::fastdds::dds::DataReaderQos losslessReaderQos(const StreamQos& q);
+// ROS 2's default (reliable, keep last 10, volatile): what rviz2 and nav2 expect.
+eprosima::fastdds::dds::DataWriterQos rosDefaultWriterQos();
+eprosima::fastdds::dds::DataReaderQos rosDefaultReaderQos();
+
+}  // namespace scanfilter::dds_io

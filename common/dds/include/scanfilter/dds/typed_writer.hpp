@@ -1,0 +1,88 @@
+#pragma once
+#include <atomic>
+#include <stdexcept>
+#include <string>
+
+#include <fastdds/dds/publisher/DataWriter.hpp>
+#include <fastdds/dds/publisher/DataWriterListener.hpp>
+
+#include "scanfilter/dds/dds_participant.hpp"
+
+namespace scanfilter::dds_io {
+
+// A DataWriter of one generated type on one topic, counting its matched readers.
+template <typename PubSubType>
+class TypedWriter : private eprosima::fastdds::dds::DataWriterListener {
+ public:
+  using Sample = typename PubSubType::type;
+
+  TypedWriter(DdsParticipant& participant, const std::string& topic_name,
+              const eprosima::fastdds::dds::DataWriterQos& qos)
+      : participant_(participant) {
+    auto* topic = participant.topic(topic_name, eprosima::fastdds::dds::TypeSupport(new PubSubType()));
+    writer_ = participant.publisher()->create_datawriter(topic, qos, this);
+    if (writer_ == nullptr) throw std::runtime_error("cannot create a writer on " + topic_name);
+  }
+  ~TypedWriter() override { participant_.publisher()->delete_datawriter(writer_); }
+  TypedWriter(const TypedWriter&) = delete;
+  TypedWriter& operator=(const TypedWriter&) = delete;
+
+  // Lossless streams: at most `window` samples may be unacknowledged; the
+  // write that reaches it waits (up to `max_wait_s`) for every reader to
+  // acknowledge. Fast DDS does not always block a full keep-all history (it
+  // can fail at once), so the window keeps the history from ever filling.
+  void setFlowControl(int window, double max_wait_s) {
+    window_ = window;
+    max_wait_s_ = max_wait_s;
+  }
+
+  // False when the sample could not be written, or (with flow control) was
+  // not acknowledged in time by a reader that does not keep up.
+  bool write(Sample& sample) {
+    if (!writeOnce(sample)) return false;
+    if (window_ > 0 && ++unacknowledged_ >= window_) {
+      unacknowledged_ = 0;
+      if (!waitForAcknowledgments(max_wait_s_)) {
+        last_error_ = eprosima::fastrtps::types::ReturnCode_t::RETCODE_TIMEOUT;
+        return false;
+      }
+    }
+    return true;
+  }
+
+ private:
+  bool writeOnce(Sample& sample) {
+    const auto rc = writer_->write(&sample, eprosima::fastrtps::rtps::InstanceHandle_t());
+    last_error_ = rc();
+    return rc == eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK;
+  }
+
+ public:
+  // The Fast DDS return code of the last failed write (for the log).
+  int lastError() const { return last_error_; }
+
+  int matchedReaders() const { return matched_.load(); }
+
+  // Waits until every matched reader acknowledged every sample written.
+  bool waitForAcknowledgments(double seconds) {
+    const auto whole = static_cast<int32_t>(seconds);
+    return writer_->wait_for_acknowledgments({whole, static_cast<uint32_t>((seconds - whole) * 1e9)}) ==
+           eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK;
+  }
+
+ private:
+  void on_publication_matched(eprosima::fastdds::dds::DataWriter*,
+                              const eprosima::fastdds::dds::PublicationMatchedStatus& status) override {
+    matched_ = status.current_count;
+  }
+
+  DdsParticipant& participant_;
+  eprosima::fastdds::dds::DataWriter* writer_ = nullptr;
+  std::atomic<int> matched_{0};
+  int last_error_ = 0;
+  int window_ = 0;  // 0: no flow control
+  double max_wait_s_ = 0.0;
+  int unacknowledged_ = 0;
+};
+
+}  // namespace scanfilter::dds_io

@@ -1,0 +1,70 @@
+#include "scanfilter/dds/filter_stage.hpp"
+
+#include <chrono>
+
+#include "scanfilter/point_code.hpp"
+
+namespace scanfilter::dds_io {
+
+FilterStage::FilterStage(DdsParticipant& participant, const ServiceSettings& settings, ServiceMetrics& metrics,
+                         std::string stage, const std::string& input_topic, const std::string& output_topic,
+                         Step step, AfterPublish after_publish)
+    : metrics_(metrics),
+      stage_(std::move(stage)),
+      step_(std::move(step)),
+      after_publish_(std::move(after_publish)),
+      writer_(participant, output_topic, losslessWriterQos(settings.stream)),
+      reader_(participant, input_topic, losslessReaderQos(settings.stream),
+              [this](LabeledScanMsg& msg) { onSample(msg); }) {
+  writer_.setFlowControl(flowControlWindow(settings.stream), settings.stream.max_blocking_s);
+}
+
+void FilterStage::onSample(LabeledScanMsg& msg) {
+  const TimeMsg received = wallClockNow();
+  metrics_.scanReceived();
+  if (const auto reason = rejectionReason(msg)) {
+    metrics_.sampleRejected(*reason);
+    rejections_.warn(*reason, "dropped scan " + std::to_string(msg.sequence_number()) + ": " + *reason);
+    return;
+  }
+  if (!msg.timing().empty()) metrics_.hopLatency(toSeconds(received) - toSeconds(msg.timing().back().sent()));
+
+  fromMessage(msg, scan_, sensor_);
+  if (scan_.labels.empty()) {  // straight from ingest: every return valid so far
+    scan_.labels.resize(scan_.size());
+    for (std::size_t i = 0; i < scan_.size(); ++i)
+      scan_.labels[i] = static_cast<std::uint8_t>(scan_.hasReturn(i) ? PointCode::kValid : PointCode::kNoReturn);
+  }
+  labels_before_ = scan_.labels;
+  const auto start = std::chrono::steady_clock::now();
+  step_(scan_, sensor_, scan_.labels);
+  metrics_.processingTime(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  countRemoved(labels_before_, scan_.labels);
+
+  msg.labels().assign(scan_.labels.begin(), scan_.labels.end());
+  stampStage(msg, stage_, received);
+  if (!writer_.write(msg)) {
+    metrics_.sampleRejected("write_failed");
+    rejections_.warn("write_failed", "could not publish scan " + std::to_string(msg.sequence_number()) +
+                                         " (Fast DDS return code " + std::to_string(writer_.lastError()) +
+                                         "; 10 = timeout: no reader took it within max_blocking_s)");
+    return;
+  }
+  metrics_.scanPublished();
+  ++processed_;
+  metrics_.endToEndLatency(toSeconds(wallClockNow()) - toSeconds(msg.timing().front().sent()));
+  if (after_publish_) after_publish_(msg);
+}
+
+void FilterStage::countRemoved(std::span<const std::uint8_t> before, std::span<const std::uint8_t> after) {
+  double jump = 0, misdetected = 0;
+  for (std::size_t i = 0; i < after.size(); ++i) {
+    if (after[i] == before[i]) continue;
+    jump += after[i] == static_cast<std::uint8_t>(PointCode::kJump);
+    misdetected += after[i] == static_cast<std::uint8_t>(PointCode::kMisdetected);
+  }
+  if (jump > 0) metrics_.pointsRemoved("jump", jump);
+  if (misdetected > 0) metrics_.pointsRemoved("misdetected", misdetected);
+}
+
+}  // namespace scanfilter::dds_io

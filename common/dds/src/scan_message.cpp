@@ -1,0 +1,125 @@
+#include "scanfilter/dds/scan_message.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "scanfilter/point_code.hpp"
+
+namespace scanfilter::dds_io {
+
+namespace {
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kNanosPerSecond = 1e9;
+}  // namespace
+
+TimeMsg toTimeMsg(double seconds) {
+  TimeMsg t;
+  const double whole = std::floor(seconds);
+  t.sec(static_cast<int32_t>(whole));
+  t.nanosec(static_cast<uint32_t>(std::llround((seconds - whole) * kNanosPerSecond) % 1000000000LL));
+  return t;
+}
+
+double toSeconds(const TimeMsg& t) { return t.sec() + t.nanosec() / kNanosPerSecond; }
+
+TimeMsg wallClockNow() {
+  const auto now = std::chrono::system_clock::now().time_since_epoch();
+  const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(now).count();
+  TimeMsg t;
+  t.sec(static_cast<int32_t>(ns / 1000000000LL));
+  t.nanosec(static_cast<uint32_t>(ns % 1000000000LL));
+  return t;
+}
+
+void toMessage(const Scan& scan, const SensorInfo& sensor, std::uint64_t sequence, LabeledScanMsg& out) {
+  out.header().stamp(toTimeMsg(scan.stamp));
+  out.header().frame_id("map");
+  out.sequence_number(sequence);
+  out.pose_x(scan.pose.x);
+  out.pose_y(scan.pose.y);
+  out.pose_theta(scan.pose.theta);
+  out.mount_x(sensor.mount.x);
+  out.mount_y(sensor.mount.y);
+  out.mount_yaw(sensor.mount.yaw);
+  out.clockwise(sensor.direction == BeamDirection::kCw);
+  out.angular_accuracy_deg(sensor.angular_accuracy_deg);
+  out.angle_min(scan.angle_min);
+  out.angle_increment(scan.angle_increment);
+  out.range_min(sensor.range_min);
+  out.range_max(sensor.range_max);
+  out.ranges().assign(scan.ranges.begin(), scan.ranges.end());
+  out.intensities().assign(scan.intensities.begin(), scan.intensities.end());
+  out.labels().assign(scan.labels.begin(), scan.labels.end());
+  out.timing().clear();
+}
+
+std::optional<std::string> rejectionReason(const LabeledScanMsg& msg) {
+  const std::size_t n = msg.ranges().size();
+  if (n == 0) return "empty";
+  if (n > kMaxBeamsOnWire) return "too_many_beams";
+  if (!msg.intensities().empty() && msg.intensities().size() != n) return "length_mismatch";
+  if (!msg.labels().empty() && msg.labels().size() != n) return "length_mismatch";
+  if (!std::isfinite(msg.pose_x()) || !std::isfinite(msg.pose_y()) || !std::isfinite(msg.pose_theta()) ||
+      !std::isfinite(msg.mount_x()) || !std::isfinite(msg.mount_y()) || !std::isfinite(msg.mount_yaw()))
+    return "nan_pose";
+  if (!(msg.angle_increment() != 0.0) || !std::isfinite(msg.angle_increment()) || !std::isfinite(msg.angle_min()))
+    return "zero_increment";
+  if (!(msg.range_max() > msg.range_min()) || !(msg.angular_accuracy_deg() > 0.0)) return "bad_sensor";
+  for (auto code : msg.labels())
+    if (!isValidPointCode(code)) return "bad_label";
+  return std::nullopt;
+}
+
+void fromMessage(const LabeledScanMsg& msg, Scan& scan, SensorInfo& sensor) {
+  sensor.mount = {msg.mount_x(), msg.mount_y(), msg.mount_yaw()};
+  sensor.direction = msg.clockwise() ? BeamDirection::kCw : BeamDirection::kCcw;
+  sensor.range_min = msg.range_min();
+  sensor.range_max = msg.range_max();
+  sensor.angular_accuracy_deg = msg.angular_accuracy_deg();
+  scan.stamp = toSeconds(msg.header().stamp());
+  scan.pose = {msg.pose_x(), msg.pose_y(), msg.pose_theta()};
+  scan.angle_min = msg.angle_min();
+  scan.angle_increment = msg.angle_increment();
+  scan.ranges.resize(msg.ranges().size());
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+    const double r = msg.ranges()[i];
+    scan.ranges[i] = (std::isfinite(r) && r != 0.0 && r >= sensor.range_min && r <= sensor.range_max) ? r : kNaN;
+  }
+  scan.intensities.assign(msg.intensities().begin(), msg.intensities().end());
+  scan.labels.assign(msg.labels().begin(), msg.labels().end());
+  scan.truth.clear();
+  scan.thin_leg_beams.clear();
+}
+
+void toFilteredLaserScan(const LabeledScanMsg& msg, const std::string& frame_id, LaserScanMsg& out) {
+  const std::size_t n = msg.ranges().size();
+  // ROS angles grow counter-clockwise; a clockwise sensor's beam at angle a is at -a.
+  const double sign = msg.clockwise() ? -1.0 : 1.0;
+  out.header().stamp(msg.header().stamp());
+  out.header().frame_id(frame_id);
+  out.angle_min(static_cast<float>(sign * msg.angle_min()));
+  out.angle_increment(static_cast<float>(sign * msg.angle_increment()));
+  out.angle_max(static_cast<float>(sign * (msg.angle_min() + msg.angle_increment() * static_cast<double>(n - 1))));
+  out.time_increment(0.0f);
+  out.scan_time(0.0f);
+  out.range_min(static_cast<float>(msg.range_min()));
+  out.range_max(static_cast<float>(msg.range_max()));
+  out.ranges().resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto code = msg.labels().empty() ? PointCode::kValid : static_cast<PointCode>(msg.labels()[i]);
+    const bool removed = code == PointCode::kJump || code == PointCode::kMisdetected;
+    out.ranges()[i] = removed ? std::numeric_limits<float>::infinity() : static_cast<float>(msg.ranges()[i]);
+  }
+  out.intensities().assign(msg.intensities().begin(), msg.intensities().end());
+}
+
+void stampStage(LabeledScanMsg& msg, const std::string& stage, const TimeMsg& received) {
+  scanfilter_msgs::msg::dds_::StageTiming_ timing;
+  timing.stage(stage);
+  timing.received(received);
+  timing.sent(wallClockNow());
+  msg.timing().push_back(timing);
+}
+
+}  // namespace scanfilter::dds_io

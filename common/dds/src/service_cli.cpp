@@ -1,0 +1,58 @@
+// CLI11 is slow to compile: this is the only file of the services that includes it.
+#include "scanfilter/dds/service_cli.hpp"
+
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+#include <spdlog/spdlog.h>
+
+#include "scanfilter/input_error.hpp"
+
+namespace scanfilter::dds_io {
+
+std::string scanfilterVersion() { return SCANFILTER_VERSION; }
+
+ServiceCli::ServiceCli(std::string name, std::string description, std::string default_metrics_address,
+                       std::set<std::string> own_sections)
+    : name_(std::move(name)),
+      description_(std::move(description)),
+      default_metrics_address_(std::move(default_metrics_address)),
+      own_sections_(std::move(own_sections)) {}
+
+std::optional<int> ServiceCli::parse(int argc, char** argv) {
+  CLI::App app{description_, name_};
+  app.set_version_flag("--version", name_ + " (scanfilter " + scanfilterVersion() + ")");
+  std::string config_path = std::string(SCANFILTER_CONFIG_DIR) + "/" + name_ + ".yaml";
+  std::string log_level;
+  std::optional<int> domain;
+  std::optional<std::string> ns, metrics;
+  app.add_option("--config", config_path, "service config YAML (documented in config/" + name_ + ".yaml)")
+      ->capture_default_str();
+  app.add_option("--log-level", log_level, "overrides service.log_level: trace, debug, info, warn, error, off")
+      ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}));
+  app.add_option("--domain", domain, "overrides service.domain_id")->check(CLI::Range(0, 232));
+  app.add_option("--namespace", ns, "overrides service.namespace (topics rt/<ns>/...)");
+  app.add_option("--metrics-address", metrics, "overrides service.metrics_address (host:port)");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    config_ = loadServiceConfig(config_path, default_metrics_address_, own_sections_);
+  } catch (const InputError& e) {
+    std::cerr << name_ << ": error: " << e.what() << "\n";
+    return 2;
+  }
+  ServiceSettings& s = config_.service;
+  if (!log_level.empty()) s.log_level = log_level;
+  if (domain) s.participant.domain_id = *domain;
+  if (ns) s.topic_namespace = *ns;
+  if (metrics) s.metrics_address = *metrics;
+  s.participant.name = "scanfilter_" + name_;
+  spdlog::set_level(spdlog::level::from_str(s.log_level));
+  spdlog::set_pattern("[%Y-%m-%d %H:%M:%S.%e] [" + name_ + "] [%l] %v");
+  return std::nullopt;
+}
+
+}  // namespace scanfilter::dds_io

@@ -1,0 +1,57 @@
+#include "scanfilter/dds/service_config.hpp"
+
+#include <filesystem>
+
+#include "scanfilter/input_error.hpp"
+#include "scanfilter/yaml_section.hpp"
+
+namespace scanfilter::dds_io {
+
+namespace {
+constexpr int kMaxDomainId = 232;  // DDS RTPS port mapping allows domains 0-232
+}
+
+std::string ServiceConfigFile::resolvePath(const std::string& p) const {
+  if (p.empty() || std::filesystem::path(p).is_absolute()) return p;
+  return (std::filesystem::path(directory) / p).lexically_normal().string();
+}
+
+ServiceConfigFile loadServiceConfig(const std::string& path, const std::string& default_metrics_address,
+                                    const std::set<std::string>& own_sections) {
+  ServiceConfigFile file;
+  file.path = path;
+  file.directory = std::filesystem::absolute(path).parent_path().string();
+  file.root = loadYamlFile(path);
+  if (!file.root.IsMap()) throw InputError(path, 1, "", "expected a mapping at the top level");
+  for (const auto& entry : file.root) {
+    const auto key = entry.first.as<std::string>();
+    if (key != "service" && !own_sections.count(key))
+      throw InputError(path, static_cast<std::size_t>(entry.first.Mark().line) + 1, key, "unknown section");
+  }
+  ServiceSettings& s = file.service;
+  s.metrics_address = default_metrics_address;
+  YamlSection section(file.root, "service", path);
+  section.read("domain_id", s.participant.domain_id);
+  section.read("namespace", s.topic_namespace);
+  std::string profiles = "fastdds-loopback.xml";
+  section.read("profiles_file", profiles);
+  s.participant.profiles_file = file.resolvePath(profiles);
+  section.read("participant_profile", s.participant.profile);
+  section.read("metrics_address", s.metrics_address);
+  section.readChoice("log_level", s.log_level, {"trace", "debug", "info", "warn", "error", "off"});
+  section.read("queue_depth", s.stream.queue_depth);
+  section.read("max_blocking_s", s.stream.max_blocking_s);
+  section.requireRange("domain_id", s.participant.domain_id, 0, kMaxDomainId, "a DDS domain id 0-232");
+  section.requireRange("queue_depth", s.stream.queue_depth, 1, 100000, "an integer 1-100000");
+  section.requireRange("max_blocking_s", s.stream.max_blocking_s, 0.001, 3600, "0.001-3600 (s)");
+  if (s.topic_namespace.find_first_of(" \t#") != std::string::npos || (!s.topic_namespace.empty() && (s.topic_namespace.front() == '/' || s.topic_namespace.back() == '/')))
+    section.fail("namespace", "expected a ROS name without spaces or leading/trailing '/', got \"" + s.topic_namespace + "\"");
+  if (s.metrics_address.find(':') == std::string::npos)
+    section.fail("metrics_address", "expected host:port, got \"" + s.metrics_address + "\"");
+  if (!std::filesystem::exists(s.participant.profiles_file))
+    section.fail("profiles_file", "no such file: " + s.participant.profiles_file);
+  section.rejectUnknownKeys();
+  return file;
+}
+
+}  // namespace scanfilter::dds_io

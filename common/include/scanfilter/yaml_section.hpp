@@ -1,0 +1,75 @@
+#pragma once
+#include <optional>
+#include <set>
+#include <string>
+#include <type_traits>
+
+#include <yaml-cpp/yaml.h>
+
+#include "scanfilter/input_error.hpp"
+
+namespace scanfilter {
+
+// Reads one YAML mapping of a config file with errors that name the file, the
+// line and the key, and remembers which keys were read so that the others can
+// be reported as unknown (a misspelt key would otherwise be ignored).
+class YamlSection {
+ public:
+  // The mapping under `key` in `parent` (absent: every read keeps its default).
+  YamlSection(const YAML::Node& parent, const std::string& key, std::string file, std::string path_prefix = "");
+
+  bool present() const { return static_cast<bool>(node_); }
+  const std::string& path() const { return path_; }
+  const std::string& file() const { return file_; }
+  const YAML::Node& node() const { return node_; }
+
+  template <typename T>
+  void read(const char* key, T& value) {
+    const YAML::Node v = take(key);
+    if (!v) return;
+    try {
+      value = v.as<T>();
+    } catch (const YAML::Exception&) {
+      fail(key, "expected " + typeName<T>() + ", got \"" + scalar(v) + "\"");
+    }
+  }
+
+  // A number or the word `auto` (unset).
+  void readAuto(const char* key, std::optional<double>& value);
+
+  // One of `choices`.
+  void readChoice(const char* key, std::string& value, const std::set<std::string>& choices);
+
+  // Marks a key as known without reading it (a subsection read elsewhere).
+  YAML::Node take(const char* key);
+
+  void requireRange(const char* key, double value, double lo, double hi, const char* expected) const {
+    if (!(value >= lo && value <= hi)) fail(key, std::string("expected ") + expected);
+  }
+
+  void rejectUnknownKeys() const;
+
+  [[noreturn]] void fail(const char* key, const std::string& problem) const;
+
+ private:
+  static std::string scalar(const YAML::Node& v) { return v.IsScalar() ? v.Scalar() : "a non-scalar"; }
+  template <typename T>
+  static std::string typeName() {
+    if constexpr (std::is_same_v<T, bool>) return "true or false";
+    else if constexpr (std::is_same_v<T, std::string>) return "a string";
+    else if constexpr (std::is_integral_v<T>) return "an integer";
+    else return "a number";
+  }
+
+  std::string file_;
+  std::string path_;
+  YAML::Node node_;
+  std::set<std::string> used_;
+};
+
+// Parses YAML text, reporting syntax errors with file and line.
+YAML::Node parseYaml(const std::string& text, const std::string& file);
+// Reads and parses a YAML file.
+YAML::Node loadYamlFile(const std::string& path);
+
+}  // namespace scanfilter

@@ -1,0 +1,82 @@
+#include "scanfilter/yaml_section.hpp"
+
+#include <fstream>
+#include <sstream>
+
+namespace scanfilter {
+
+namespace {
+std::size_t lineOf(const YAML::Node& node) {
+  return node && node.Mark().line >= 0 ? static_cast<std::size_t>(node.Mark().line) + 1 : 0;
+}
+}  // namespace
+
+YamlSection::YamlSection(const YAML::Node& parent, const std::string& key, std::string file, std::string path_prefix)
+    : file_(std::move(file)),
+      path_(path_prefix.empty() ? key : path_prefix + "." + key),
+      node_(parent[key]) {  // init, not assign: yaml-cpp's operator= writes through
+  if (node_ && !node_.IsMap()) throw InputError(file_, lineOf(node_), path_, "expected a mapping");
+}
+
+YAML::Node YamlSection::take(const char* key) {
+  used_.insert(key);
+  return node_ ? node_[key] : YAML::Node(YAML::NodeType::Undefined);
+}
+
+void YamlSection::readAuto(const char* key, std::optional<double>& value) {
+  const YAML::Node v = take(key);
+  if (!v) return;
+  if (v.IsScalar() && v.Scalar() == "auto") {
+    value.reset();
+    return;
+  }
+  try {
+    value = v.as<double>();
+  } catch (const YAML::Exception&) {
+    fail(key, "expected a number or auto, got \"" + scalar(v) + "\"");
+  }
+}
+
+void YamlSection::readChoice(const char* key, std::string& value, const std::set<std::string>& choices) {
+  const YAML::Node v = take(key);
+  if (!v) return;
+  const std::string text = v.IsScalar() ? v.Scalar() : "";
+  if (choices.count(text)) {
+    value = text;
+    return;
+  }
+  std::string list;
+  for (const auto& c : choices) list += (list.empty() ? "" : ", ") + c;
+  fail(key, "expected one of " + list + ", got \"" + scalar(v) + "\"");
+}
+
+void YamlSection::rejectUnknownKeys() const {
+  if (!node_) return;
+  for (const auto& entry : node_) {
+    const auto key = entry.first.as<std::string>();
+    if (!used_.count(key)) throw InputError(file_, lineOf(entry.first), path_ + "." + key, "unknown key");
+  }
+}
+
+void YamlSection::fail(const char* key, const std::string& problem) const {
+  const YAML::Node at = node_ ? node_[key] : YAML::Node(YAML::NodeType::Undefined);
+  throw InputError(file_, at ? lineOf(at) : lineOf(node_), path_ + "." + key, problem);
+}
+
+YAML::Node parseYaml(const std::string& text, const std::string& file) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw InputError(file, static_cast<std::size_t>(e.mark.line) + 1, "", "malformed YAML: " + e.msg);
+  }
+}
+
+YAML::Node loadYamlFile(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, 0, "", "cannot open file");
+  std::stringstream text;
+  text << in.rdbuf();
+  return parseYaml(text.str(), path);
+}
+
+}  // namespace scanfilter

@@ -1,0 +1,115 @@
+// scan_ingest: the pipeline's source. Replays a scan log or a CARMEN log (at
+// the recorded speed, a multiple of it, or as fast as the pipeline accepts
+// without loss) or runs the simulator on a scene, and publishes posed scans on
+// rt/<ns>/posed_scan.
+#include <memory>
+
+#include <spdlog/spdlog.h>
+
+#include "scan_player.hpp"
+#include "scanfilter/dds/service_cli.hpp"
+#include "scanfilter/dds/shutdown_signal.hpp"
+#include "scanfilter/dds/stream_qos.hpp"
+#include "scanfilter/dds/topic_names.hpp"
+#include "scanfilter/input_error.hpp"
+#include "scanfilter/sim/scan_simulator.hpp"
+#include "scanfilter/yaml_section.hpp"
+
+using namespace scanfilter;
+using namespace scanfilter::dds_io;
+
+namespace {
+
+struct IngestSettings {
+  std::string kind = "simulator";
+  std::string path;
+  std::string scene = "hall";
+  std::uint64_t seed = 1;
+  double carmen_range_max = 80.0;
+  ingest::PlaybackRate rate;
+  int wait_for_subscribers = 1;
+  double wait_timeout_s = 30.0;
+  bool exit_at_end = true;
+};
+
+IngestSettings readIngestSettings(const ServiceConfigFile& config) {
+  IngestSettings s;
+  YamlSection source(config.root, "source", config.path);
+  source.readChoice("kind", s.kind, {"log", "simulator"});
+  source.read("path", s.path);
+  source.read("scene", s.scene);
+  source.read("seed", s.seed);
+  source.read("carmen_range_max", s.carmen_range_max);
+  std::string rate = "recorded";
+  source.read("rate", rate);
+  if (!ingest::parsePlaybackRate(rate, s.rate))
+    source.fail("rate", "expected recorded, max or a speed factor > 0, got \"" + rate + "\"");
+  if (s.kind == "log" && s.path.empty()) source.fail("path", "a log source needs a path");
+  s.path = config.resolvePath(s.path);
+  source.rejectUnknownKeys();
+  YamlSection playback(config.root, "playback", config.path);
+  playback.read("wait_for_subscribers", s.wait_for_subscribers);
+  playback.read("wait_timeout_s", s.wait_timeout_s);
+  playback.read("exit_at_end", s.exit_at_end);
+  playback.requireRange("wait_for_subscribers", s.wait_for_subscribers, 0, 1000, "an integer 0-1000");
+  playback.rejectUnknownKeys();
+  return s;
+}
+
+std::unique_ptr<ScanSource> openSource(const IngestSettings& s) {
+  if (s.kind == "log") return openScanSource(s.path, {.carmen_range_max = s.carmen_range_max});
+  return std::make_unique<sim::ScanSimulator>(sim::findScene(s.scene), s.seed);
+}
+
+bool waitForSubscribers(const ingest::ScanPlayer::Writer& writer, const IngestSettings& s) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(s.wait_timeout_s);
+  while (writer.matchedReaders() < s.wait_for_subscribers) {
+    if (ShutdownSignal::waitFor(std::chrono::milliseconds(50)) || std::chrono::steady_clock::now() > deadline)
+      return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ServiceCli cli("scan_ingest", "scanfilter scan_ingest: replays a scan log or CARMEN log, or simulates a scene",
+                 "127.0.0.1:9471", {"source", "playback"});
+  if (const auto exit_code = cli.parse(argc, argv)) return *exit_code;
+  const ServiceConfigFile& config = cli.config();
+  try {
+    const IngestSettings settings = readIngestSettings(config);
+    auto source = openSource(settings);
+    ShutdownSignal::install();
+    ServiceMetrics metrics("scan_ingest", config.service.metrics_address, scanfilterVersion());
+    DdsParticipant participant(config.service.participant);
+    const std::string topic = rosTopic(config.service.topic_namespace, kPosedScanTopic);
+    ingest::ScanPlayer::Writer writer(participant, topic, losslessWriterQos(config.service.stream));
+    writer.setFlowControl(flowControlWindow(config.service.stream), config.service.stream.max_blocking_s);
+    spdlog::info("started: domain {}, {} source -> {}, metrics http://{}/metrics",
+                 config.service.participant.domain_id, settings.kind, topic, metrics.address());
+    if (!waitForSubscribers(writer, settings)) {
+      if (ShutdownSignal::requested()) return 0;
+      spdlog::error("{} of {} subscribers matched within {} s; is the jump_filter running on domain {}?",
+                    writer.matchedReaders(), settings.wait_for_subscribers, settings.wait_timeout_s,
+                    config.service.participant.domain_id);
+      return 1;
+    }
+    ingest::ScanPlayer player(*source, writer, metrics, settings.rate);
+    const std::uint64_t published = player.play();
+    writer.waitForAcknowledgments(config.service.stream.max_blocking_s);
+    spdlog::info("published {} scans", published);
+    metrics.matched("writer", topic, writer.matchedReaders());
+    while (!settings.exit_at_end && !ShutdownSignal::waitFor(std::chrono::seconds(1))) {
+      metrics.updateProcessStats();
+      metrics.matched("writer", topic, writer.matchedReaders());
+    }
+  } catch (const InputError& e) {
+    spdlog::error("{}", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    spdlog::error("{}", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,41 @@
+#pragma once
+#include <cstdint>
+#include <string>
+
+#include "scanfilter/dds/scan_message.hpp"
+#include "scanfilter/dds/service_metrics.hpp"
+#include "scanfilter/dds/typed_writer.hpp"
+#include "scanfilter/scan_source.hpp"
+#include "scanfilter_typesPubSubTypes.h"
+
+namespace scanfilter::ingest {
+
+// How fast a recording is replayed.
+struct PlaybackRate {
+  bool as_fast_as_accepted = false;  // "max": the pipeline's reliable queues set the pace, nothing is lost
+  double speed = 1.0;                // multiple of the recorded speed otherwise
+};
+
+// Publishes every scan of a source as a posed LabeledScan, paced by the
+// recorded stamps (or by the pipeline), and stops early on SIGINT/SIGTERM.
+class ScanPlayer {
+ public:
+  using Writer = dds_io::TypedWriter<scanfilter_msgs::msg::dds_::LabeledScan_PubSubType>;
+
+  ScanPlayer(ScanSource& source, Writer& writer, dds_io::ServiceMetrics& metrics, PlaybackRate rate)
+      : source_(source), writer_(writer), metrics_(metrics), rate_(rate) {}
+
+  // Plays the whole source; returns the scans published.
+  std::uint64_t play();
+
+ private:
+  ScanSource& source_;
+  Writer& writer_;
+  dds_io::ServiceMetrics& metrics_;
+  PlaybackRate rate_;
+};
+
+// Parses a rate as written in the config: "recorded", "max" or a factor.
+bool parsePlaybackRate(const std::string& text, PlaybackRate& rate);
+
+}  // namespace scanfilter::ingest

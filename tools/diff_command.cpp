@@ -1,0 +1,37 @@
+#include <iostream>
+
+#include "commands.hpp"
+#include "scanfilter/scan_source.hpp"
+
+namespace scanfilter::cli {
+
+int runDiff(const DiffOptions& options) {
+  auto a = openScanSource(options.first);
+  auto b = openScanSource(options.second);
+  ScanRecord ra, rb;
+  std::size_t scans = 0, differing_scans = 0, differing_beams = 0;
+  for (;; ++scans) {
+    const bool more_a = a->next(ra), more_b = b->next(rb);
+    if (!more_a || !more_b) {
+      if (more_a != more_b) {
+        std::cout << "different lengths: " << (more_a ? options.second : options.first) << " ends after " << scans
+                  << " scans\n";
+        return 1;
+      }
+      break;
+    }
+    if (ra.scan.labels.size() != rb.scan.labels.size()) {
+      std::cout << "scan " << scans << ": " << ra.scan.labels.size() << " vs " << rb.scan.labels.size() << " labels\n";
+      return 1;
+    }
+    std::size_t here = 0;
+    for (std::size_t i = 0; i < ra.scan.labels.size(); ++i) here += ra.scan.labels[i] != rb.scan.labels[i];
+    if (here > 0 && differing_scans++ == 0)
+      std::cout << "first difference: scan " << scans << " (stamp " << ra.scan.stamp << "), " << here << " beams\n";
+    differing_beams += here;
+  }
+  std::cout << scans << " scans compared; " << differing_scans << " differ in " << differing_beams << " labels\n";
+  return differing_scans == 0 ? 0 : 1;
+}
+
+}  // namespace scanfilter::cli

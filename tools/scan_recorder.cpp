@@ -1,0 +1,81 @@
+// scan_recorder: subscribes to the pipeline's labelled scans and writes them
+// to a scan log, so a live run can be compared with `scanfilter replay` or
+// drawn with `scanfilter render`. Stops on SIGINT/SIGTERM or after --count scans.
+#include <atomic>
+#include <cmath>
+#include <iostream>
+#include <mutex>
+
+#include <CLI/CLI.hpp>
+
+#include "scanfilter/dds/dds_participant.hpp"
+#include "scanfilter/dds/scan_message.hpp"
+#include "scanfilter/dds/shutdown_signal.hpp"
+#include "scanfilter/dds/stream_qos.hpp"
+#include "scanfilter/dds/topic_names.hpp"
+#include "scanfilter/dds/typed_reader.hpp"
+#include "scanfilter/scan_log_writer.hpp"
+#include "scanfilter_typesPubSubTypes.h"
+
+using namespace scanfilter;
+using namespace scanfilter::dds_io;
+
+int main(int argc, char** argv) {
+  CLI::App app{"scan_recorder: record rt/<ns>/labeled_scan (or another LabeledScan topic) to a scan log"};
+  ParticipantSettings participant_settings;
+  participant_settings.profiles_file = SCANFILTER_DEPLOY_DIR "/fastdds-loopback.xml";
+  participant_settings.name = "scanfilter_scan_recorder";
+  std::string ns, topic = kLabeledScanTopic, output;
+  std::uint64_t count = 0;
+  double timeout_s = 0;
+  double idle_exit_s = 0;
+  int queue_depth = StreamQos{}.queue_depth;
+  app.add_option("-o,--output", output, "scan log to write")->required();
+  app.add_option("--domain", participant_settings.domain_id, "DDS domain id")->capture_default_str();
+  app.add_option("--namespace", ns, "topic namespace (rt/<ns>/...)");
+  app.add_option("--topic", topic, "topic name under rt/<ns>/")->capture_default_str();
+  app.add_option("--profiles-file", participant_settings.profiles_file, "Fast DDS XML profiles")->capture_default_str();
+  app.add_option("--count", count, "stop after this many scans (0: until SIGINT/SIGTERM)");
+  app.add_option("--timeout", timeout_s, "stop after this many seconds (0: no limit)");
+  app.add_option("--idle-exit", idle_exit_s, "stop once no scan arrived for this many seconds after the first (0: never)");
+  app.add_option("--queue-depth", queue_depth, "reliable reader queue (match the services')")->capture_default_str();
+  app.set_version_flag("--version", "scan_recorder (scanfilter " SCANFILTER_VERSION ")");
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    ShutdownSignal::install();
+    DdsParticipant participant(participant_settings);
+    std::mutex mutex;
+    std::optional<ScanLogWriter> writer;
+    std::atomic<std::uint64_t> recorded{0};
+    std::atomic<std::int64_t> last_arrival_ns{0};
+    ScanRecord record;
+    StreamQos qos;
+    qos.queue_depth = queue_depth;
+    TypedReader<scanfilter_msgs::msg::dds_::LabeledScan_PubSubType> reader(
+        participant, rosTopic(ns, topic), losslessReaderQos(qos), [&](LabeledScanMsg& msg) {
+          std::lock_guard lock(mutex);
+          if (count > 0 && recorded >= count) return;
+          SensorInfo sensor;
+          fromMessage(msg, record.scan, sensor);
+          if (!writer) writer.emplace(output, ScanLogHeader{1, "scan_recorder " + rosTopic(ns, topic), sensor});
+          writer->write(record);
+          last_arrival_ns = std::chrono::steady_clock::now().time_since_epoch().count();
+          if (++recorded == count) ShutdownSignal::request();
+        });
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+    while (!ShutdownSignal::waitFor(std::chrono::milliseconds(100))) {
+      const auto now = std::chrono::steady_clock::now();
+      if (timeout_s > 0 && now > deadline) break;
+      const auto idle = now - std::chrono::steady_clock::time_point(std::chrono::steady_clock::duration(last_arrival_ns.load()));
+      if (idle_exit_s > 0 && last_arrival_ns.load() != 0 && idle > std::chrono::duration<double>(idle_exit_s)) break;
+    }
+    std::lock_guard lock(mutex);
+    if (writer) writer->close();
+    std::cout << "recorded " << recorded << " scans -> " << output << "\n";
+    return count > 0 && recorded < count ? 1 : 0;
+  } catch (const std::exception& e) {
+    std::cerr << "scan_recorder: error: " << e.what() << "\n";
+    return 1;
+  }
+}
