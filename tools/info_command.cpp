@@ -1,8 +1,10 @@
+#include <array>
 #include <cmath>
 #include <iostream>
 #include <numbers>
 
 #include "commands.hpp"
+#include "scanfilter/point_code.hpp"
 #include "scanfilter/scan_source.hpp"
 
 namespace scanfilter::cli {
@@ -15,6 +17,7 @@ int runInfo(const InfoOptions& options) {
   std::size_t scans = 0, beams = 0, returns = 0, labelled = 0, with_truth = 0;
   double first = 0.0, last = 0.0, path = 0.0;
   std::size_t min_beams = SIZE_MAX, max_beams = 0;
+  std::array<std::size_t, kPointCodeCount> label_counts{};
   Pose2 previous;
   ScanRecord record;
   while (source->next(record)) {
@@ -29,6 +32,7 @@ int runInfo(const InfoOptions& options) {
     max_beams = std::max(max_beams, s.size());
     for (std::size_t i = 0; i < s.size(); ++i) returns += s.hasReturn(i);
     labelled += !s.labels.empty();
+    for (auto code : s.labels) ++label_counts[code];
     with_truth += !s.truth.empty();
   }
   std::cout << "file:      " << options.input << "\n"
@@ -41,6 +45,12 @@ int runInfo(const InfoOptions& options) {
             << "duration:  " << (last - first) << " s, path " << path << " m\n"
             << "returns:   " << returns << " of " << beams << " beams\n"
             << "truth:     " << with_truth << " scans, labels: " << labelled << " scans\n";
+  if (labelled > 0) {
+    std::cout << "labels:   ";
+    for (int c = 0; c < kPointCodeCount; ++c)
+      std::cout << " " << pointCodeName(static_cast<PointCode>(c)) << "=" << label_counts[static_cast<std::size_t>(c)];
+    std::cout << "\n";
+  }
   return 0;
 }
 

@@ -79,5 +79,6 @@ int main(int argc, char** argv) {
     spdlog::error("{}", e.what());
     return 1;
   }
+  spdlog::info("stopped");
   return 0;
 }

@@ -30,7 +30,7 @@ double residentBytes() {
 ServiceMetrics::ServiceMetrics(const std::string& service, const std::string& address, const std::string& version)
     : service_(service),
       address_(address),
-      exposer_(address),
+      exposer_(std::make_unique<Exposer>(address)),
       registry_(std::make_shared<Registry>()),
       received_(BuildCounter().Name("scanfilter_scans_received_total").Help("Scans received").Register(*registry_).Add({{"service", service}})),
       published_(BuildCounter().Name("scanfilter_scans_published_total").Help("Scans published").Register(*registry_).Add({{"service", service}})),
@@ -46,7 +46,14 @@ ServiceMetrics::ServiceMetrics(const std::string& service, const std::string& ad
       cpu_seconds_(BuildGauge().Name("scanfilter_process_cpu_seconds_total").Help("CPU time used by the process").Register(*registry_).Add({{"service", service}})),
       resident_bytes_(BuildGauge().Name("scanfilter_process_resident_memory_bytes").Help("Resident memory of the process").Register(*registry_).Add({{"service", service}})) {
   BuildGauge().Name("scanfilter_build_info").Help("Build information").Register(*registry_).Add({{"service", service}, {"version", version}}).Set(1);
-  exposer_.RegisterCollectable(registry_);
+  exposer_->RegisterCollectable(registry_);
+}
+
+ServiceMetrics::~ServiceMetrics() {
+  // Stopping civetweb waits out its 2 s poll quantum, which would break the
+  // promise that SIGTERM ends a service within a second. The service is
+  // exiting: close the listening socket's owner with the process instead.
+  static_cast<void>(exposer_.release());
 }
 
 void ServiceMetrics::pointsRemoved(const std::string& reason, double count) {

@@ -17,6 +17,10 @@ namespace scanfilter::dds_io {
 class ServiceMetrics {
  public:
   ServiceMetrics(const std::string& service, const std::string& address, const std::string& version);
+  // Lives as long as the service: see the destructor.
+  ~ServiceMetrics();
+  ServiceMetrics(const ServiceMetrics&) = delete;
+  ServiceMetrics& operator=(const ServiceMetrics&) = delete;
 
   void scanReceived() { received_.Increment(); }
   void scanPublished() { published_.Increment(); }
@@ -34,7 +38,7 @@ class ServiceMetrics {
  private:
   std::string service_;
   std::string address_;
-  prometheus::Exposer exposer_;
+  std::unique_ptr<prometheus::Exposer> exposer_;
   std::shared_ptr<prometheus::Registry> registry_;
   prometheus::Counter& received_;
   prometheus::Counter& published_;
