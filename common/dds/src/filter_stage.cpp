@@ -57,14 +57,17 @@ void FilterStage::onSample(LabeledScanMsg& msg) {
 }
 
 void FilterStage::countRemoved(std::span<const std::uint8_t> before, std::span<const std::uint8_t> after) {
-  double jump = 0, misdetected = 0;
+  double jump = 0, misdetected = 0, restored = 0;
   for (std::size_t i = 0; i < after.size(); ++i) {
     if (after[i] == before[i]) continue;
     jump += after[i] == static_cast<std::uint8_t>(PointCode::kJump);
     misdetected += after[i] == static_cast<std::uint8_t>(PointCode::kMisdetected);
+    // Step 2's rescue gives back jump points it found persistent.
+    restored += before[i] == static_cast<std::uint8_t>(PointCode::kJump);
   }
   if (jump > 0) metrics_.pointsRemoved("jump", jump);
   if (misdetected > 0) metrics_.pointsRemoved("misdetected", misdetected);
+  if (restored > 0) metrics_.pointsRestored(restored);
 }
 
 }  // namespace scanfilter::dds_io

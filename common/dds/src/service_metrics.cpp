@@ -36,6 +36,7 @@ ServiceMetrics::ServiceMetrics(const std::string& service, const std::string& ad
       published_(BuildCounter().Name("scanfilter_scans_published_total").Help("Scans published").Register(*registry_).Add({{"service", service}})),
       removed_(BuildCounter().Name("scanfilter_points_removed_total").Help("Points removed, by reason").Register(*registry_)),
       rejected_(BuildCounter().Name("scanfilter_samples_rejected_total").Help("Samples dropped as invalid, by reason").Register(*registry_)),
+      restored_(BuildCounter().Name("scanfilter_points_restored_total").Help("Jump points restored by the persistence rescue").Register(*registry_).Add({{"service", service}})),
       processing_(BuildHistogram().Name("scanfilter_processing_seconds").Help("Time to filter one scan").Register(*registry_)
                       .Add({{"service", service}}, latencyBuckets())),
       latency_(BuildHistogram().Name("scanfilter_end_to_end_latency_seconds").Help("From ingest publishing a scan to this service publishing it")

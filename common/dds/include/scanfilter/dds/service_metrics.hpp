@@ -26,6 +26,7 @@ class ServiceMetrics {
   void scanPublished() { published_.Increment(); }
   void pointsRemoved(const std::string& reason, double count);
   void sampleRejected(const std::string& reason);
+  void pointsRestored(double count) { restored_.Increment(count); }
   void processingTime(double seconds) { processing_.Observe(seconds); }
   void endToEndLatency(double seconds) { latency_.Observe(seconds); }
   void hopLatency(double seconds) { hop_.Observe(seconds); }
@@ -44,6 +45,7 @@ class ServiceMetrics {
   prometheus::Counter& published_;
   prometheus::Family<prometheus::Counter>& removed_;
   prometheus::Family<prometheus::Counter>& rejected_;
+  prometheus::Counter& restored_;
   prometheus::Histogram& processing_;
   prometheus::Histogram& latency_;
   prometheus::Histogram& hop_;
