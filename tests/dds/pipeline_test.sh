@@ -3,7 +3,7 @@
 # private network namespace when possible (unshare -n), else on their own
 # domain id with the loopback-only profile.
 #
-#   pipeline_test.sh BUILD_DIR SOURCE_DIR CASE     CASE: labels | metrics | config
+#   pipeline_test.sh BUILD_DIR SOURCE_DIR CASE     CASE: labels | metrics | prometheus | config
 set -euo pipefail
 BUILD="$1" SRC="$2" CASE="$3"
 if [ -z "${SCANFILTER_IN_NETNS:-}" ] && [ "$(id -u)" = 0 ] && unshare -n true 2>/dev/null; then
@@ -32,13 +32,22 @@ start_filters() {
   JUMP=$!; PIDS+=($JUMP)
 }
 
-run_ingest() {  # log file
+ingest_config() {  # log file, exit_at_end
   cat > "$WORK/ingest.yaml" <<YAML
 service: {domain_id: $DOMAIN, profiles_file: $SRC/deploy/fastdds-loopback.xml, metrics_address: 127.0.0.1:19471}
 source: {kind: log, path: $1, rate: max}
-playback: {wait_for_subscribers: 1, wait_timeout_s: 30, exit_at_end: true}
+playback: {wait_for_subscribers: 1, wait_timeout_s: 30, exit_at_end: $2}
 YAML
+}
+
+run_ingest() {  # log file
+  ingest_config "$1" true
   "$BUILD/services/scan_ingest" --config "$WORK/ingest.yaml" > "$WORK/ingest.log" 2>&1 || fail "scan_ingest exited non-zero"
+}
+
+prom_query() {  # PromQL: prints "value" of each series, one per line
+  curl -s "http://127.0.0.1:19090/api/v1/query" --data-urlencode "query=$1" |
+    grep -o '"value":\[[^]]*\]' | sed 's/.*,"\(.*\)"\]/\1/' || true
 }
 
 wait_matched() {  # port topic
@@ -100,6 +109,32 @@ metrics)
     elapsed_ms=$(( ($(date +%s%N) - start) / 1000000 ))
     [ "$elapsed_ms" -lt 1000 ] || fail "service $pid took ${elapsed_ms} ms to stop"
   done
+  ;;
+prometheus)
+  # The real Prometheus server scrapes all three services with the scrape
+  # config from deploy/; its query API shows them up and the counters.
+  command -v prometheus > /dev/null || fail "prometheus is not installed (scripts/install-deps.sh)"
+  sed 's/:947\([123]\)"/:1947\1"/g; s/scrape_interval: 5s/scrape_interval: 1s/' "$SRC/deploy/prometheus.yml" > "$WORK/prometheus.yml"
+  prometheus --config.file="$WORK/prometheus.yml" --web.listen-address=127.0.0.1:19090 \
+    --storage.tsdb.path="$WORK/tsdb" > "$WORK/prometheus.log" 2>&1 &
+  PROM=$!; PIDS+=($PROM)
+  start_filters
+  wait_matched 19472 rt/jump_filtered_scan
+  ingest_config "$WORK/in.scanlog.jsonl" false
+  "$BUILD/services/scan_ingest" --config "$WORK/ingest.yaml" > "$WORK/ingest.log" 2>&1 &
+  INGEST=$!; PIDS+=($INGEST)
+  ok=""
+  for _ in $(seq 1 300); do
+    up=$(prom_query 'sum(up{job="scanfilter"})')
+    published=$(prom_query 'scanfilter_scans_published_total{service="penetration_filter"}')
+    [ "$up" = 3 ] && [ "$published" = $FRAMES ] && ok=1 && break
+    sleep 0.1
+  done
+  [ -n "$ok" ] || fail "Prometheus saw up=$up and penetration_filter published=$published (expected 3 and $FRAMES)"
+  ingested=$(prom_query 'scanfilter_scans_published_total{service="scan_ingest"}')
+  [ "$ingested" = $FRAMES ] || fail "Prometheus saw scan_ingest published=$ingested"
+  for pid in $INGEST $PEN $JUMP; do kill -TERM "$pid"; wait "$pid" || fail "service $pid exited non-zero"; done
+  kill -TERM "$PROM"; wait "$PROM" || true
   ;;
 config)
   # A broken config stops each service with a non-zero exit and names the key.
