@@ -6,6 +6,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "live_source.hpp"
 #include "scan_player.hpp"
 #include "scanfilter/dds/service_cli.hpp"
 #include "scanfilter/dds/shutdown_signal.hpp"
@@ -27,6 +28,7 @@ struct IngestSettings {
   std::uint64_t seed = 1;
   double carmen_range_max = 80.0;
   ingest::PlaybackRate rate;
+  ingest::LiveSettings live;
   int wait_for_subscribers = 1;
   double wait_timeout_s = 30.0;
   bool exit_at_end = true;
@@ -35,7 +37,7 @@ struct IngestSettings {
 IngestSettings readIngestSettings(const ServiceConfigFile& config) {
   IngestSettings s;
   YamlSection source(config.root, "source", config.path);
-  source.readChoice("kind", s.kind, {"log", "simulator"});
+  source.readChoice("kind", s.kind, {"log", "simulator", "live"});
   source.read("path", s.path);
   source.read("scene", s.scene);
   source.read("seed", s.seed);
@@ -47,6 +49,18 @@ IngestSettings readIngestSettings(const ServiceConfigFile& config) {
   if (s.kind == "log" && s.path.empty()) source.fail("path", "a log source needs a path");
   s.path = config.resolvePath(s.path);
   source.rejectUnknownKeys();
+  YamlSection live(config.root, "live", config.path);
+  live.read("scan_topic", s.live.scan_topic);
+  live.read("odom_topic", s.live.odom_topic);
+  std::vector<double> mount = {0.0, 0.0, 0.0};
+  live.read("mount", mount);
+  if (mount.size() != 3) live.fail("mount", "expected [x, y, yaw]");
+  s.live.mount = {mount[0], mount[1], mount[2]};
+  live.read("max_pose_gap_s", s.live.max_pose_gap_s);
+  live.read("max_pose_wait_s", s.live.max_pose_wait_s);
+  live.requireRange("max_pose_gap_s", s.live.max_pose_gap_s, 1e-4, 60, "0.0001-60 (s)");
+  live.requireRange("max_pose_wait_s", s.live.max_pose_wait_s, 0, 60, "0-60 (s)");
+  live.rejectUnknownKeys();
   YamlSection playback(config.root, "playback", config.path);
   playback.read("wait_for_subscribers", s.wait_for_subscribers);
   playback.read("wait_timeout_s", s.wait_timeout_s);
@@ -70,16 +84,42 @@ bool waitForSubscribers(const ingest::ScanPlayer::Writer& writer, const IngestSe
   return true;
 }
 
+// Live: pose each scan from the driver's odometry and publish it until stopped.
+int runLive(DdsParticipant& participant, const ServiceConfigFile& config, const IngestSettings& settings,
+            ingest::ScanPlayer::Writer& writer, ServiceMetrics& metrics) {
+  constexpr auto kDrainPeriod = std::chrono::milliseconds(5);
+  ingest::LiveSource live(participant, config.service.topic_namespace, settings.live, metrics);
+  LabeledScanMsg msg;
+  std::uint64_t sequence = 0;
+  auto last_stats = std::chrono::steady_clock::now();
+  while (!ShutdownSignal::waitFor(kDrainPeriod)) {
+    live.drain([&](const Scan& scan, const SensorInfo& sensor) {
+      const TimeMsg received = wallClockNow();
+      toMessage(scan, sensor, sequence++, msg);
+      stampStage(msg, "scan_ingest", received);
+      if (writer.write(msg)) metrics.scanPublished();
+      else metrics.sampleRejected("write_failed");
+    });
+    if (std::chrono::steady_clock::now() - last_stats > std::chrono::seconds(1)) {
+      metrics.updateProcessStats();
+      metrics.matched("writer", rosTopic(config.service.topic_namespace, kPosedScanTopic), writer.matchedReaders());
+      last_stats = std::chrono::steady_clock::now();
+    }
+  }
+  spdlog::info("published {} live scans, dropped {} without a pose", sequence, live.dropped());
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   ServiceCli cli("scan_ingest", "scanfilter scan_ingest: replays a scan log or CARMEN log, or simulates a scene",
-                 "127.0.0.1:9471", {"source", "playback"});
+                 "127.0.0.1:9471", {"source", "live", "playback"});
   if (const auto exit_code = cli.parse(argc, argv)) return *exit_code;
   const ServiceConfigFile& config = cli.config();
   try {
     const IngestSettings settings = readIngestSettings(config);
-    auto source = openSource(settings);
+    auto source = settings.kind == "live" ? nullptr : openSource(settings);
     ShutdownSignal::install();
     ServiceMetrics metrics("scan_ingest", config.service.metrics_address, scanfilterVersion());
     DdsParticipant participant(config.service.participant);
@@ -95,6 +135,7 @@ int main(int argc, char** argv) {
                     config.service.participant.domain_id);
       return 1;
     }
+    if (settings.kind == "live") return runLive(participant, config, settings, writer, metrics);
     ingest::ScanPlayer player(*source, writer, metrics, settings.rate);
     const std::uint64_t published = player.play();
     writer.waitForAcknowledgments(config.service.stream.max_blocking_s);

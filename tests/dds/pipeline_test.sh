@@ -3,7 +3,7 @@
 # private network namespace when possible (unshare -n), else on their own
 # domain id with the loopback-only profile.
 #
-#   pipeline_test.sh BUILD_DIR SOURCE_DIR CASE     CASE: labels | metrics | prometheus | config
+#   pipeline_test.sh BUILD_DIR SOURCE_DIR CASE     CASE: labels | metrics | prometheus | live | config
 set -euo pipefail
 BUILD="$1" SRC="$2" CASE="$3"
 if [ -z "${SCANFILTER_IN_NETNS:-}" ] && [ "$(id -u)" = 0 ] && unshare -n true 2>/dev/null; then
@@ -135,6 +135,32 @@ prometheus)
   [ "$ingested" = $FRAMES ] || fail "Prometheus saw scan_ingest published=$ingested"
   for pid in $INGEST $PEN $JUMP; do kill -TERM "$pid"; wait "$pid" || fail "service $pid exited non-zero"; done
   kill -TERM "$PROM"; wait "$PROM" || true
+  ;;
+live)
+  # A robot driver's LaserScan + Odometry (best effort) into the live ingest:
+  # every scan is posed at its stamp and comes out of the pipeline labelled.
+  LIVE=100
+  "$SF" simulate --scene hall --seed 4 --max-frames $LIVE -o "$WORK/live_in.scanlog.jsonl" > /dev/null
+  start_filters
+  "$BUILD/tools/scan_recorder" --domain "$DOMAIN" --count $LIVE --timeout 60 -o "$WORK/live.scanlog.jsonl" > "$WORK/recorder.log" 2>&1 &
+  REC=$!; PIDS+=($REC)
+  cat > "$WORK/ingest.yaml" <<YAML
+service: {domain_id: $DOMAIN, profiles_file: $SRC/deploy/fastdds-loopback.xml, metrics_address: 127.0.0.1:19471}
+source: {kind: live}
+live: {scan_topic: scan, odom_topic: odom, mount: [-0.05, 0.0, 3.141592653589793], max_pose_gap_s: 0.2}
+YAML
+  wait_matched 19472 rt/jump_filtered_scan
+  wait_matched 19473 rt/labeled_scan
+  "$BUILD/services/scan_ingest" --config "$WORK/ingest.yaml" > "$WORK/ingest.log" 2>&1 &
+  INGEST=$!; PIDS+=($INGEST)
+  "$BUILD/tools/ros_scan_publisher" --domain "$DOMAIN" --rate 50 "$WORK/live_in.scanlog.jsonl" > "$WORK/publisher.log" 2>&1 ||
+    fail "ros_scan_publisher failed"
+  wait "$REC" || fail "recorder did not get $LIVE scans"
+  kill -TERM "$INGEST"; wait "$INGEST" || fail "scan_ingest exited non-zero"
+  path_in=$("$SF" info "$WORK/live_in.scanlog.jsonl" | sed -n 's/.*path \([0-9.]*\) m/\1/p')
+  path_out=$("$SF" info "$WORK/live.scanlog.jsonl" | sed -n 's/.*path \([0-9.]*\) m/\1/p')
+  [ "$path_in" = "$path_out" ] || fail "poses differ: path $path_in m in, $path_out m out"
+  "$SF" info "$WORK/live.scanlog.jsonl" | grep -q "labels: *valid=" || fail "no labels in the output"
   ;;
 config)
   # A broken config stops each service with a non-zero exit and names the key.

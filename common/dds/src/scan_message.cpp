@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "scanfilter/point_code.hpp"
 
@@ -112,6 +113,40 @@ void toFilteredLaserScan(const LabeledScanMsg& msg, const std::string& frame_id,
     out.ranges()[i] = removed ? std::numeric_limits<float>::infinity() : static_cast<float>(msg.ranges()[i]);
   }
   out.intensities().assign(msg.intensities().begin(), msg.intensities().end());
+}
+
+void fromLaserScan(const LaserScanMsg& msg, const SensorMount& mount, Scan& scan, SensorInfo& sensor) {
+  sensor.mount = mount;
+  sensor.direction = BeamDirection::kCcw;
+  sensor.range_min = msg.range_min();
+  sensor.range_max = msg.range_max();
+  sensor.angular_accuracy_deg = std::abs(msg.angle_increment()) * 180.0 / std::numbers::pi;
+  scan.stamp = toSeconds(msg.header().stamp());
+  scan.angle_min = msg.angle_min();
+  scan.angle_increment = msg.angle_increment();
+  scan.ranges.resize(msg.ranges().size());
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+    const double r = msg.ranges()[i];
+    scan.ranges[i] = (std::isfinite(r) && r != 0.0 && r >= sensor.range_min && r <= sensor.range_max) ? r : kNaN;
+  }
+  scan.intensities.assign(msg.intensities().begin(), msg.intensities().end());
+  if (scan.intensities.size() != scan.ranges.size()) scan.intensities.clear();
+  scan.labels.clear();
+  scan.truth.clear();
+  scan.thin_leg_beams.clear();
+}
+
+double yawOf(const geometry_msgs::msg::dds_::Quaternion_& q) {
+  return std::atan2(2.0 * (q.w() * q.z() + q.x() * q.y()), 1.0 - 2.0 * (q.y() * q.y() + q.z() * q.z()));
+}
+
+geometry_msgs::msg::dds_::Quaternion_ quaternionOfYaw(double yaw) {
+  geometry_msgs::msg::dds_::Quaternion_ q;
+  q.x(0.0);
+  q.y(0.0);
+  q.z(std::sin(yaw / 2.0));
+  q.w(std::cos(yaw / 2.0));
+  return q;
 }
 
 void stampStage(LabeledScanMsg& msg, const std::string& stage, const TimeMsg& received) {

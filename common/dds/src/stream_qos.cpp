@@ -63,4 +63,22 @@ DataReaderQos rosDefaultReaderQos() {
   return qos;
 }
 
+DataReaderQos sensorDataReaderQos(int depth) {
+  DataReaderQos qos = DATAREADER_QOS_DEFAULT;
+  qos.reliability().kind = BEST_EFFORT_RELIABILITY_QOS;
+  qos.history().kind = KEEP_LAST_HISTORY_QOS;
+  qos.history().depth = depth;
+  qos.durability().kind = VOLATILE_DURABILITY_QOS;
+  return qos;
+}
+
+DataWriterQos sensorDataWriterQos(int depth) {
+  DataWriterQos qos = DATAWRITER_QOS_DEFAULT;
+  qos.reliability().kind = BEST_EFFORT_RELIABILITY_QOS;
+  qos.history().kind = KEEP_LAST_HISTORY_QOS;
+  qos.history().depth = depth;
+  qos.durability().kind = VOLATILE_DURABILITY_QOS;
+  return qos;
+}
+
 }  // namespace scanfilter::dds_io

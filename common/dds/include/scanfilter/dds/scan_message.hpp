@@ -39,6 +39,15 @@ void fromMessage(const LabeledScanMsg& msg, Scan& scan, SensorInfo& sensor);
 // sensor frame as ROS expects.
 void toFilteredLaserScan(const LabeledScanMsg& msg, const std::string& frame_id, LaserScanMsg& out);
 
+// A ROS LaserScan as a Scan (counter-clockwise angles; NaN, ±inf and values
+// outside the message's range limits are no return) and the sensor it
+// implies, given where the sensor sits on the robot.
+void fromLaserScan(const LaserScanMsg& msg, const SensorMount& mount, Scan& scan, SensorInfo& sensor);
+// Heading of a ROS quaternion about z.
+double yawOf(const geometry_msgs::msg::dds_::Quaternion_& q);
+// A ROS quaternion for a heading about z.
+geometry_msgs::msg::dds_::Quaternion_ quaternionOfYaw(double yaw);
+
 // Appends this stage's received/sent times to the sample's timing trail.
 void stampStage(LabeledScanMsg& msg, const std::string& stage, const TimeMsg& received);
 

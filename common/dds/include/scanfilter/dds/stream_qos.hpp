@@ -19,5 +19,9 @@ eprosima::fastdds::dds::DataReaderQos losslessReaderQos(const StreamQos& q);
 // ROS 2's default (reliable, keep last 10, volatile): what rviz2 and nav2 expect.
 eprosima::fastdds::dds::DataWriterQos rosDefaultWriterQos();
 eprosima::fastdds::dds::DataReaderQos rosDefaultReaderQos();
+// For a robot driver's rt/scan and rt/odom: best effort (ROS 2's sensor-data
+// QoS), which matches both best-effort and reliable writers.
+eprosima::fastdds::dds::DataReaderQos sensorDataReaderQos(int depth);
+eprosima::fastdds::dds::DataWriterQos sensorDataWriterQos(int depth);
 
 }  // namespace scanfilter::dds_io

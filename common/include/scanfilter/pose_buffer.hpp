@@ -1,0 +1,41 @@
+#pragma once
+#include <deque>
+#include <optional>
+
+#include "scanfilter/scan.hpp"
+
+namespace scanfilter {
+
+// Recent odometry poses by stamp, to pose a scan at its own stamp: the pose
+// is interpolated between the two odometry samples around it (heading along
+// the shorter arc). A scan with no sample within `max_gap` seconds on each
+// side gets no pose: it is counted and dropped by the caller, never guessed.
+class PoseBuffer {
+ public:
+  explicit PoseBuffer(double max_gap, double keep_seconds) : max_gap_(max_gap), keep_(keep_seconds) {}
+
+  // Adds a sample; samples must come in stamp order (older ones are ignored).
+  bool add(double stamp, const Pose2& pose);
+
+  // The pose at `stamp`, or nothing when the samples around it are missing
+  // or farther than max_gap.
+  std::optional<Pose2> at(double stamp) const;
+
+  // True when a later sample may still arrive that would pose `stamp`
+  // (the newest sample is older than it, but not by more than max_gap).
+  bool mayStillPose(double stamp) const { return !samples_.empty() && samples_.back().stamp < stamp; }
+
+  double newestStamp() const { return samples_.empty() ? -1e300 : samples_.back().stamp; }
+  std::size_t size() const { return samples_.size(); }
+
+ private:
+  struct Sample {
+    double stamp;
+    Pose2 pose;
+  };
+  double max_gap_;
+  double keep_;
+  std::deque<Sample> samples_;
+};
+
+}  // namespace scanfilter
