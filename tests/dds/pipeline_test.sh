@@ -3,7 +3,7 @@
 # private network namespace when possible (unshare -n), else on their own
 # domain id with the loopback-only profile.
 #
-#   pipeline_test.sh BUILD_DIR SOURCE_DIR CASE     CASE: labels | metrics | prometheus | live | config
+#   pipeline_test.sh BUILD_DIR SOURCE_DIR CASE     CASE: labels | metrics | prometheus | live | cyclone | config
 set -euo pipefail
 BUILD="$1" SRC="$2" CASE="$3"
 if [ -z "${SCANFILTER_IN_NETNS:-}" ] && [ "$(id -u)" = 0 ] && unshare -n true 2>/dev/null; then
@@ -161,6 +161,23 @@ YAML
   path_out=$("$SF" info "$WORK/live.scanlog.jsonl" | sed -n 's/.*path \([0-9.]*\) m/\1/p')
   [ "$path_in" = "$path_out" ] || fail "poses differ: path $path_in m in, $path_out m out"
   "$SF" info "$WORK/live.scanlog.jsonl" | grep -q "labels: *valid=" || fail "no labels in the output"
+  ;;
+cyclone)
+  # Another vendor's DDS (Cyclone, localhost only) drives the live ingest and
+  # subscribes to the filtered LaserScan and the labelled scan.
+  export CYCLONEDDS_URI='<CycloneDDS><Domain id="any"><General><Interfaces><NetworkInterface address="127.0.0.1" multicast="false"/></Interfaces><AllowMulticast>false</AllowMulticast></General><Discovery><ParticipantIndex>auto</ParticipantIndex><MaxAutoParticipantIndex>20</MaxAutoParticipantIndex><Peers><Peer Address="127.0.0.1"/></Peers></Discovery></Domain></CycloneDDS>'
+  start_filters
+  cat > "$WORK/ingest.yaml" <<YAML
+service: {domain_id: $DOMAIN, profiles_file: $SRC/deploy/fastdds-loopback.xml, metrics_address: 127.0.0.1:19471}
+source: {kind: live}
+live: {scan_topic: scan, odom_topic: odom, mount: [0.0, 0.0, 0.0]}
+YAML
+  wait_matched 19472 rt/jump_filtered_scan
+  "$BUILD/services/scan_ingest" --config "$WORK/ingest.yaml" > "$WORK/ingest.log" 2>&1 &
+  INGEST=$!; PIDS+=($INGEST)
+  "$BUILD/tests/cyclone_peer" "$DOMAIN" 50 > "$WORK/cyclone.log" 2>&1 || fail "the Cyclone DDS peer did not get what the pipeline sends"
+  cat "$WORK/cyclone.log"
+  kill -TERM "$INGEST"; wait "$INGEST" || fail "scan_ingest exited non-zero"
   ;;
 config)
   # A broken config stops each service with a non-zero exit and names the key.
