@@ -44,6 +44,18 @@ static int frame_of(const struct builtin_interfaces_msg_dds__Time_ *t) {
   return (t->sec - 100) * 10 + (int)(t->nanosec / 100000000u);
 }
 
+static int wait_subscribed(dds_entity_t reader, const char *name) {
+  dds_time_t deadline = dds_time() + MATCH_TIMEOUT;
+  dds_subscription_matched_status_t status;
+  while (dds_time() < deadline) {
+    dds_get_subscription_matched_status(reader, &status);
+    if (status.current_count > 0) return 1;
+    dds_sleepfor(DDS_MSECS(20));
+  }
+  fprintf(stderr, "cyclone_peer: nobody publishes %s\n", name);
+  return 0;
+}
+
 static void fill_scan(sensor_msgs_msg_dds__LaserScan_ *scan, float *ranges, int k) {
   memset(scan, 0, sizeof *scan);
   scan->header.stamp.sec = 100 + k / 10;
@@ -85,8 +97,11 @@ int main(int argc, char **argv) {
   dds_entity_t r_filtered = dds_create_reader(pp, t_filtered, reliable, NULL);
   dds_entity_t r_labeled = dds_create_reader(pp, t_labeled, reliable, NULL);
   dds_delete_qos(reliable);
-  if (!wait_matched(w_scan, "rt/scan") || !wait_matched(w_odom, "rt/odom")) return 1;
-  dds_sleepfor(DDS_MSECS(500)); /* let the readers of rt/scan_filtered and rt/labeled_scan match too */
+  /* Both directions matched before the first scan: the pipeline's output
+   * topics are volatile, so a late reader would miss the first scans. */
+  if (!wait_matched(w_scan, "rt/scan") || !wait_matched(w_odom, "rt/odom") ||
+      !wait_subscribed(r_filtered, "rt/scan_filtered") || !wait_subscribed(r_labeled, "rt/labeled_scan"))
+    return 1;
 
   static float ranges[BEAMS];
   for (int k = 0; k <= scans; ++k) {
