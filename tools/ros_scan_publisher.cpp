@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
   std::string input, ns, frame = "laser";
   double rate_hz = 0.0;
   int wait_readers = 1;
+  bool reliable = false;
   app.add_option("input", input, "scan log or CARMEN log")->required()->check(CLI::ExistingFile);
   app.add_option("--domain", settings.domain_id, "DDS domain id")->capture_default_str();
   app.add_option("--namespace", ns, "topic namespace (rt/<ns>/scan)");
@@ -57,6 +58,7 @@ int main(int argc, char** argv) {
   app.add_option("--frame-id", frame, "LaserScan frame_id")->capture_default_str();
   app.add_option("--rate", rate_hz, "scans per second (0: the recorded pace)");
   app.add_option("--wait-readers", wait_readers, "wait for this many scan readers before publishing")->capture_default_str();
+  app.add_flag("--reliable", reliable, "reliable writers (default: best effort, as sensor drivers publish)");
   app.set_version_flag("--version", "ros_scan_publisher (scanfilter " SCANFILTER_VERSION ")");
   CLI11_PARSE(app, argc, argv);
   try {
@@ -64,10 +66,10 @@ int main(int argc, char** argv) {
     auto source = openScanSource(input);
     const SensorInfo& sensor = source->header().sensor;
     DdsParticipant participant(settings);
-    TypedWriter<sensor_msgs::msg::dds_::LaserScan_PubSubType> scans(participant, rosTopic(ns, "scan"),
-                                                                     sensorDataWriterQos(kSensorQueueDepth));
-    TypedWriter<nav_msgs::msg::dds_::Odometry_PubSubType> odometry(participant, rosTopic(ns, "odom"),
-                                                                   sensorDataWriterQos(kSensorQueueDepth));
+    auto qos = sensorDataWriterQos(kSensorQueueDepth);
+    if (reliable) qos.reliability().kind = eprosima::fastdds::dds::RELIABLE_RELIABILITY_QOS;
+    TypedWriter<sensor_msgs::msg::dds_::LaserScan_PubSubType> scans(participant, rosTopic(ns, "scan"), qos);
+    TypedWriter<nav_msgs::msg::dds_::Odometry_PubSubType> odometry(participant, rosTopic(ns, "odom"), qos);
     while (scans.matchedReaders() < wait_readers || odometry.matchedReaders() < wait_readers)
       if (ShutdownSignal::waitFor(std::chrono::milliseconds(50))) return 0;
     // The sensor's mount becomes the odometry's base pose offset: publish the

@@ -8,6 +8,12 @@ namespace scanfilter::ingest {
 namespace {
 // Odometry is kept this many pose gaps back: enough to pose late scans.
 constexpr double kOdometryKeepFactor = 20.0;
+
+eprosima::fastdds::dds::DataReaderQos readerQos(const LiveSettings& settings) {
+  auto qos = dds_io::sensorDataReaderQos(settings.queue_depth);
+  if (settings.reliable) qos.reliability().kind = eprosima::fastdds::dds::RELIABLE_RELIABILITY_QOS;
+  return qos;
+}
 }  // namespace
 
 LiveSource::LiveSource(dds_io::DdsParticipant& participant, const std::string& ns, const LiveSettings& settings,
@@ -15,11 +21,9 @@ LiveSource::LiveSource(dds_io::DdsParticipant& participant, const std::string& n
     : settings_(settings),
       metrics_(metrics),
       poses_(settings.max_pose_gap_s, settings.max_pose_gap_s * kOdometryKeepFactor + settings.max_pose_wait_s),
-      odom_reader_(participant, dds_io::rosTopic(ns, settings.odom_topic),
-                   dds_io::sensorDataReaderQos(settings.queue_depth),
+      odom_reader_(participant, dds_io::rosTopic(ns, settings.odom_topic), readerQos(settings),
                    [this](dds_io::OdometryMsg& msg) { onOdometry(msg); }),
-      scan_reader_(participant, dds_io::rosTopic(ns, settings.scan_topic),
-                   dds_io::sensorDataReaderQos(settings.queue_depth),
+      scan_reader_(participant, dds_io::rosTopic(ns, settings.scan_topic), readerQos(settings),
                    [this](dds_io::LaserScanMsg& msg) { onScan(msg); }) {}
 
 void LiveSource::onOdometry(dds_io::OdometryMsg& msg) {

@@ -20,6 +20,7 @@ struct LiveSettings {
   double max_pose_gap_s = 0.2;       // odometry samples farther than this from the scan stamp: no pose
   double max_pose_wait_s = 0.5;      // how long a scan waits for the odometry after its stamp
   int queue_depth = 50;
+  bool reliable = false;             // best effort matches every driver; reliable only reliable ones
 };
 
 // A live robot: LaserScan on rt/<ns>/scan and Odometry on rt/<ns>/odom from

@@ -58,6 +58,7 @@ IngestSettings readIngestSettings(const ServiceConfigFile& config) {
   s.live.mount = {mount[0], mount[1], mount[2]};
   live.read("max_pose_gap_s", s.live.max_pose_gap_s);
   live.read("max_pose_wait_s", s.live.max_pose_wait_s);
+  live.read("reliable", s.live.reliable);
   live.requireRange("max_pose_gap_s", s.live.max_pose_gap_s, 1e-4, 60, "0.0001-60 (s)");
   live.requireRange("max_pose_wait_s", s.live.max_pose_wait_s, 0, 60, "0-60 (s)");
   live.rejectUnknownKeys();

@@ -147,13 +147,13 @@ live)
   cat > "$WORK/ingest.yaml" <<YAML
 service: {domain_id: $DOMAIN, profiles_file: $SRC/deploy/fastdds-loopback.xml, metrics_address: 127.0.0.1:19471}
 source: {kind: live}
-live: {scan_topic: scan, odom_topic: odom, mount: [-0.05, 0.0, 3.141592653589793], max_pose_gap_s: 0.2}
+live: {scan_topic: scan, odom_topic: odom, mount: [-0.05, 0.0, 3.141592653589793], max_pose_gap_s: 0.2, reliable: true}
 YAML
   wait_matched 19472 rt/jump_filtered_scan
   wait_matched 19473 rt/labeled_scan
   "$BUILD/services/scan_ingest" --config "$WORK/ingest.yaml" > "$WORK/ingest.log" 2>&1 &
   INGEST=$!; PIDS+=($INGEST)
-  "$BUILD/tools/ros_scan_publisher" --domain "$DOMAIN" --rate 50 "$WORK/live_in.scanlog.jsonl" > "$WORK/publisher.log" 2>&1 ||
+  "$BUILD/tools/ros_scan_publisher" --domain "$DOMAIN" --rate 50 --reliable "$WORK/live_in.scanlog.jsonl" > "$WORK/publisher.log" 2>&1 ||
     fail "ros_scan_publisher failed"
   wait "$REC" || fail "recorder did not get $LIVE scans"
   kill -TERM "$INGEST"; wait "$INGEST" || fail "scan_ingest exited non-zero"
@@ -170,7 +170,7 @@ cyclone)
   cat > "$WORK/ingest.yaml" <<YAML
 service: {domain_id: $DOMAIN, profiles_file: $SRC/deploy/fastdds-loopback.xml, metrics_address: 127.0.0.1:19471}
 source: {kind: live}
-live: {scan_topic: scan, odom_topic: odom, mount: [0.0, 0.0, 0.0]}
+live: {scan_topic: scan, odom_topic: odom, mount: [0.0, 0.0, 0.0], reliable: true}
 YAML
   wait_matched 19472 rt/jump_filtered_scan
   "$BUILD/services/scan_ingest" --config "$WORK/ingest.yaml" > "$WORK/ingest.log" 2>&1 &
