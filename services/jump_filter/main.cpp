@@ -52,11 +52,7 @@ int main(int argc, char** argv) {
   if (const auto exit_code = cli.parse(argc, argv)) return *exit_code;
   const ServiceConfigFile& config = cli.config();
   try {
-    YamlSection section(config.root, "filter", config.path);
-    std::string filter_file = "filter.yaml";
-    section.read("config", filter_file);
-    section.rejectUnknownKeys();
-    const FilterConfig filter = loadFilterConfig(config.resolvePath(filter_file));
+    const FilterConfig filter = loadStageFilterConfig(config);
 
     ShutdownSignal::install();
     ServiceMetrics metrics("jump_filter", config.service.metrics_address, scanfilterVersion());

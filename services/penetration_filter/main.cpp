@@ -25,15 +25,11 @@ int main(int argc, char** argv) {
   if (const auto exit_code = cli.parse(argc, argv)) return *exit_code;
   const ServiceConfigFile& config = cli.config();
   try {
-    YamlSection filter_section(config.root, "filter", config.path);
-    std::string filter_file = "filter.yaml";
-    filter_section.read("config", filter_file);
-    filter_section.rejectUnknownKeys();
+    const FilterConfig filter_config = loadStageFilterConfig(config);
     YamlSection scan_section(config.root, "laser_scan", config.path);
     std::string frame_id = "laser";
     scan_section.read("frame_id", frame_id);
     scan_section.rejectUnknownKeys();
-    const FilterConfig filter_config = loadFilterConfig(config.resolvePath(filter_file));
 
     ShutdownSignal::install();
     ServiceMetrics metrics("penetration_filter", config.service.metrics_address, scanfilterVersion());

@@ -40,6 +40,15 @@ playback: {wait_for_subscribers: 1, wait_timeout_s: 30, exit_at_end: $2}
 YAML
 }
 
+start_pipeline() {  # scans the recorder waits for: filters and recorder up and matched
+  start_filters
+  "$BUILD/tools/scan_recorder" --domain "$DOMAIN" --count "$1" --timeout 60 -o "$WORK/live.scanlog.jsonl" \
+    > "$WORK/recorder.log" 2>&1 &
+  REC=$!; PIDS+=($REC)
+  wait_matched 19472 rt/jump_filtered_scan
+  wait_matched 19473 rt/labeled_scan
+}
+
 run_ingest() {  # log file
   ingest_config "$1" true
   "$BUILD/services/scan_ingest" --config "$WORK/ingest.yaml" > "$WORK/ingest.log" 2>&1 || fail "scan_ingest exited non-zero"
@@ -66,22 +75,14 @@ case "$CASE" in
 labels)
   # Every scan arrives, in order, with exactly the offline replay's labels.
   "$SF" replay "$WORK/in.scanlog.jsonl" --config "$SRC/config/filter.yaml" -o "$WORK/offline.scanlog.jsonl" -q
-  start_filters
-  "$BUILD/tools/scan_recorder" --domain "$DOMAIN" --count $FRAMES --timeout 60 -o "$WORK/live.scanlog.jsonl" > "$WORK/recorder.log" 2>&1 &
-  REC=$!; PIDS+=($REC)
-  wait_matched 19472 rt/jump_filtered_scan
-  wait_matched 19473 rt/labeled_scan
+  start_pipeline $FRAMES
   run_ingest "$WORK/in.scanlog.jsonl"
   wait "$REC" || fail "recorder did not get $FRAMES scans"
   "$SF" diff "$WORK/offline.scanlog.jsonl" "$WORK/live.scanlog.jsonl" || fail "live labels differ from the offline replay"
   ;;
 metrics)
   # Each endpoint's counters match what was sent; SIGTERM ends each service with 0 within a second.
-  start_filters
-  "$BUILD/tools/scan_recorder" --domain "$DOMAIN" --count $FRAMES --timeout 60 -o "$WORK/live.scanlog.jsonl" > "$WORK/recorder.log" 2>&1 &
-  REC=$!; PIDS+=($REC)
-  wait_matched 19472 rt/jump_filtered_scan
-  wait_matched 19473 rt/labeled_scan
+  start_pipeline $FRAMES
   run_ingest "$WORK/in.scanlog.jsonl"
   wait "$REC" || fail "recorder did not get $FRAMES scans"
   for svc in jump_filter:19472 penetration_filter:19473; do
@@ -141,16 +142,12 @@ live)
   # every scan is posed at its stamp and comes out of the pipeline labelled.
   LIVE=100
   "$SF" simulate --scene hall --seed 4 --max-frames $LIVE -o "$WORK/live_in.scanlog.jsonl" > /dev/null
-  start_filters
-  "$BUILD/tools/scan_recorder" --domain "$DOMAIN" --count $LIVE --timeout 60 -o "$WORK/live.scanlog.jsonl" > "$WORK/recorder.log" 2>&1 &
-  REC=$!; PIDS+=($REC)
   cat > "$WORK/ingest.yaml" <<YAML
 service: {domain_id: $DOMAIN, profiles_file: $SRC/deploy/fastdds-loopback.xml, metrics_address: 127.0.0.1:19471}
 source: {kind: live}
 live: {scan_topic: scan, odom_topic: odom, mount: [-0.05, 0.0, 3.141592653589793], max_pose_gap_s: 0.2, reliable: true}
 YAML
-  wait_matched 19472 rt/jump_filtered_scan
-  wait_matched 19473 rt/labeled_scan
+  start_pipeline $LIVE
   "$BUILD/services/scan_ingest" --config "$WORK/ingest.yaml" > "$WORK/ingest.log" 2>&1 &
   INGEST=$!; PIDS+=($INGEST)
   "$BUILD/tools/ros_scan_publisher" --domain "$DOMAIN" --rate 50 --reliable "$WORK/live_in.scanlog.jsonl" > "$WORK/publisher.log" 2>&1 ||

@@ -12,6 +12,12 @@ namespace scanfilter::dds_io {
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kNanosPerSecond = 1e9;
+
+// "No return" exactly as the scan log reader decides it: NaN, ±inf, 0 and
+// values outside the sensor's limits.
+double returnOrNaN(double r, const SensorInfo& sensor) {
+  return (std::isfinite(r) && r != 0.0 && r >= sensor.range_min && r <= sensor.range_max) ? r : kNaN;
+}
 }  // namespace
 
 TimeMsg toTimeMsg(double seconds) {
@@ -83,10 +89,7 @@ void fromMessage(const LabeledScanMsg& msg, Scan& scan, SensorInfo& sensor) {
   scan.angle_min = msg.angle_min();
   scan.angle_increment = msg.angle_increment();
   scan.ranges.resize(msg.ranges().size());
-  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
-    const double r = msg.ranges()[i];
-    scan.ranges[i] = (std::isfinite(r) && r != 0.0 && r >= sensor.range_min && r <= sensor.range_max) ? r : kNaN;
-  }
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i) scan.ranges[i] = returnOrNaN(msg.ranges()[i], sensor);
   scan.intensities.assign(msg.intensities().begin(), msg.intensities().end());
   scan.labels.assign(msg.labels().begin(), msg.labels().end());
   scan.truth.clear();
@@ -125,10 +128,7 @@ void fromLaserScan(const LaserScanMsg& msg, const SensorMount& mount, Scan& scan
   scan.angle_min = msg.angle_min();
   scan.angle_increment = msg.angle_increment();
   scan.ranges.resize(msg.ranges().size());
-  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
-    const double r = msg.ranges()[i];
-    scan.ranges[i] = (std::isfinite(r) && r != 0.0 && r >= sensor.range_min && r <= sensor.range_max) ? r : kNaN;
-  }
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i) scan.ranges[i] = returnOrNaN(msg.ranges()[i], sensor);
   scan.intensities.assign(msg.intensities().begin(), msg.intensities().end());
   if (scan.intensities.size() != scan.ranges.size()) scan.intensities.clear();
   scan.labels.clear();

@@ -54,4 +54,12 @@ ServiceConfigFile loadServiceConfig(const std::string& path, const std::string& 
   return file;
 }
 
+FilterConfig loadStageFilterConfig(const ServiceConfigFile& config) {
+  YamlSection section(config.root, "filter", config.path);
+  std::string filter_file = "filter.yaml";
+  section.read("config", filter_file);
+  section.rejectUnknownKeys();
+  return loadFilterConfig(config.resolvePath(filter_file));
+}
+
 }  // namespace scanfilter::dds_io

@@ -6,6 +6,7 @@
 
 #include "scanfilter/dds/dds_participant.hpp"
 #include "scanfilter/dds/stream_qos.hpp"
+#include "scanfilter/filter_config.hpp"
 
 namespace scanfilter::dds_io {
 
@@ -29,6 +30,10 @@ struct ServiceConfigFile {
   // Resolves a path written in the file against the file's directory.
   std::string resolvePath(const std::string& p) const;
 };
+
+// The filter parameters a filter stage uses: the file named by the config's
+// `filter.config` key (config/filter.yaml by default), loaded and validated.
+scanfilter::FilterConfig loadStageFilterConfig(const ServiceConfigFile& config);
 
 // Loads `path`, validates `service:` and checks that the top level has no
 // keys but `service` and `own_sections`. Throws InputError naming the key.
