@@ -60,8 +60,7 @@ double ScanSimulator::sigma(double range) const {
   return scene_.lidar.noise_sigma_base + scene_.lidar.noise_sigma_quadratic * range * range;
 }
 
-std::optional<double> ScanSimulator::specularGhost(const Eigen::Vector2d& origin, const Eigen::Vector2d& dir,
-                                                   const RayHit& hit) {
+std::optional<double> ScanSimulator::specularGhost(const Eigen::Vector2d& dir, const RayHit& hit) {
   const LidarModel& m = scene_.lidar;
   const double reach = scene_.sensor.range_max;
   const double p_specular = hit.material == Material::kGlass ? m.glass_specular_probability
@@ -78,7 +77,6 @@ std::optional<double> ScanSimulator::specularGhost(const Eigen::Vector2d& origin
   const auto second = caster_.cast(hit.point + kSurfaceOffset * onward, onward, reach);
   // The sensor reports the whole path length along the outgoing beam.
   if (!second) return kNaN;
-  (void)origin;
   return hit.range + second->range;
 }
 
@@ -95,7 +93,7 @@ ScanSimulator::Beam ScanSimulator::simulateBeam(const Eigen::Vector2d& origin, d
   bool displaced = false;
   std::uint8_t truth = static_cast<std::uint8_t>(PointCode::kValid);
   std::optional<double> ghost;
-  if (hit->material != Material::kRough) ghost = specularGhost(origin, dir, *hit);
+  if (hit->material != Material::kRough) ghost = specularGhost(dir, *hit);
   if (ghost) {
     if (std::isnan(*ghost)) return no_return;
     range = *ghost;

@@ -32,7 +32,9 @@ class ScanSimulator final : public ScanSource {
   };
   void planPoses();
   Beam simulateBeam(const Eigen::Vector2d& origin, double angle);
-  std::optional<double> specularGhost(const Eigen::Vector2d& origin, const Eigen::Vector2d& dir, const RayHit& hit);
+  // The path length of a mirrored or transmitted beam (NaN: it never comes
+  // back), or nothing when the surface returned the beam normally.
+  std::optional<double> specularGhost(const Eigen::Vector2d& dir, const RayHit& hit);
   double sigma(double range) const;
   bool chance(double p) { return uniform_(rng_) < p; }
   double symmetric(double max) { return (2.0 * uniform_(rng_) - 1.0) * max; }
