@@ -3,7 +3,8 @@
 # private network namespace when possible (unshare -n), else on their own
 # domain id with the loopback-only profile.
 #
-#   pipeline_test.sh BUILD_DIR SOURCE_DIR CASE     CASE: labels | metrics | prometheus | live | cyclone | config
+#   pipeline_test.sh BUILD_DIR SOURCE_DIR CASE
+#   CASE: labels | metrics | prometheus | live | cyclone | bad_samples | config
 set -euo pipefail
 BUILD="$1" SRC="$2" CASE="$3"
 if [ -z "${SCANFILTER_IN_NETNS:-}" ] && [ "$(id -u)" = 0 ] && unshare -n true 2>/dev/null; then
@@ -175,6 +176,20 @@ YAML
   "$BUILD/tests/cyclone_peer" "$DOMAIN" 50 > "$WORK/cyclone.log" 2>&1 || fail "the Cyclone DDS peer did not get what the pipeline sends"
   cat "$WORK/cyclone.log"
   kill -TERM "$INGEST"; wait "$INGEST" || fail "scan_ingest exited non-zero"
+  ;;
+bad_samples)
+  # Malformed samples from the wire are counted by reason, logged once per
+  # kind, and dropped; the service keeps running and filters the next scan.
+  start_pipeline 1
+  "$BUILD/tests/bad_sample_sender" "$DOMAIN" "$SRC/deploy/fastdds-loopback.xml" > "$WORK/sender.log" 2>&1 ||
+    fail "bad_sample_sender failed"
+  wait "$REC" || fail "the good scan after the bad ones did not come through"
+  for reason in length_mismatch nan_pose zero_increment too_many_beams empty; do
+    n=$(metric 19472 "scanfilter_samples_rejected_total\\{reason=\"$reason\",service=\"jump_filter\"\\}")
+    [ "${n:-0}" = 1 ] || fail "jump_filter counted ${n:-0} '$reason' samples, expected 1"
+    grep -q "first '$reason'" "$WORK/jump.log" || fail "no log line for '$reason'"
+  done
+  kill -0 "$JUMP" || fail "jump_filter died"
   ;;
 config)
   # A broken config stops each service with a non-zero exit and names the key.
