@@ -135,6 +135,13 @@ prometheus)
   [ -n "$ok" ] || fail "Prometheus saw up=$up and penetration_filter published=$published (expected 3 and $FRAMES)"
   ingested=$(prom_query 'scanfilter_scans_published_total{service="scan_ingest"}')
   [ "$ingested" = $FRAMES ] || fail "Prometheus saw scan_ingest published=$ingested"
+  # Every query of the Grafana dashboard is valid PromQL over these metrics.
+  grep -o '"expr": "[^"]*"' "$SRC/deploy/grafana-dashboard.json" | sed 's/"expr": "\(.*\)"/\1/' > "$WORK/exprs"
+  [ -s "$WORK/exprs" ] || fail "no queries found in deploy/grafana-dashboard.json"
+  while read -r expr; do
+    curl -s "http://127.0.0.1:19090/api/v1/query" --data-urlencode "query=$expr" | grep -q '"status":"success"' ||
+      fail "dashboard query rejected by Prometheus: $expr"
+  done < "$WORK/exprs"
   for pid in $INGEST $PEN $JUMP; do kill -TERM "$pid"; wait "$pid" || fail "service $pid exited non-zero"; done
   kill -TERM "$PROM"; wait "$PROM" || true
   ;;
