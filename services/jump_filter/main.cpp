@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
                  "127.0.0.1:9472", {"filter"});
   if (const auto exit_code = cli.parse(argc, argv)) return *exit_code;
   const ServiceConfigFile& config = cli.config();
-  try {
+  return runLogged([&] {
     const FilterConfig filter = loadStageFilterConfig(config);
 
     ShutdownSignal::install();
@@ -68,13 +68,7 @@ int main(int argc, char** argv) {
       metrics.matched("writer", rosTopic(ns, kJumpFilteredTopic), stage.matchedReaders());
     }
     spdlog::info("stopping after {} scans", stage.processed());
-  } catch (const InputError& e) {
-    spdlog::error("{}", e.what());
-    return 2;
-  } catch (const std::exception& e) {
-    spdlog::error("{}", e.what());
-    return 1;
-  }
-  spdlog::info("stopped");
-  return 0;
+    spdlog::info("stopped");
+    return 0;
+  });
 }

@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
                  "127.0.0.1:9473", {"filter", "laser_scan"});
   if (const auto exit_code = cli.parse(argc, argv)) return *exit_code;
   const ServiceConfigFile& config = cli.config();
-  try {
+  return runLogged([&] {
     const FilterConfig filter_config = loadStageFilterConfig(config);
     YamlSection scan_section(config.root, "laser_scan", config.path);
     std::string frame_id = "laser";
@@ -61,13 +61,7 @@ int main(int argc, char** argv) {
       metrics.matched("writer", rosTopic(ns, kFilteredLaserScanTopic), laser_writer.matchedReaders());
     }
     spdlog::info("stopping after {} scans ({} penetration cache resets)", stage.processed(), filter->resetCount());
-  } catch (const InputError& e) {
-    spdlog::error("{}", e.what());
-    return 2;
-  } catch (const std::exception& e) {
-    spdlog::error("{}", e.what());
-    return 1;
-  }
-  spdlog::info("stopped");
-  return 0;
+    spdlog::info("stopped");
+    return 0;
+  });
 }

@@ -118,7 +118,7 @@ int main(int argc, char** argv) {
                  "127.0.0.1:9471", {"source", "live", "playback"});
   if (const auto exit_code = cli.parse(argc, argv)) return *exit_code;
   const ServiceConfigFile& config = cli.config();
-  try {
+  return runLogged([&] {
     const IngestSettings settings = readIngestSettings(config);
     auto source = settings.kind == "live" ? nullptr : openSource(settings);
     ShutdownSignal::install();
@@ -146,12 +146,6 @@ int main(int argc, char** argv) {
       metrics.updateProcessStats();
       metrics.matched("writer", topic, writer.matchedReaders());
     }
-  } catch (const InputError& e) {
-    spdlog::error("{}", e.what());
-    return 2;
-  } catch (const std::exception& e) {
-    spdlog::error("{}", e.what());
-    return 1;
-  }
-  return 0;
+    return 0;
+  });
 }

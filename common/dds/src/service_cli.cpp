@@ -12,6 +12,18 @@ namespace scanfilter::dds_io {
 
 std::string scanfilterVersion() { return SCANFILTER_VERSION; }
 
+int runLogged(const std::function<int()>& body) {
+  try {
+    return body();
+  } catch (const InputError& e) {
+    spdlog::error("{}", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    spdlog::error("{}", e.what());
+    return 1;
+  }
+}
+
 ServiceCli::ServiceCli(std::string name, std::string description, std::string default_metrics_address,
                        std::set<std::string> own_sections)
     : name_(std::move(name)),

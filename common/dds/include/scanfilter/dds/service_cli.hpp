@@ -1,4 +1,5 @@
 #pragma once
+#include <functional>
 #include <optional>
 #include <set>
 #include <string>
@@ -28,5 +29,9 @@ class ServiceCli {
 };
 
 std::string scanfilterVersion();
+
+// Runs a service's body and turns what escapes it into an exit code: bad
+// input (a config value, a file) 2, anything else 1, both logged.
+int runLogged(const std::function<int()>& body);
 
 }  // namespace scanfilter::dds_io
