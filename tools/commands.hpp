@@ -40,7 +40,17 @@ struct DiffOptions {
   std::string second;
 };
 
+struct MapOptions {
+  std::string input;
+  std::string output;  // base path: BASE.pgm, BASE.yaml, BASE.png, BASE.logodds
+  std::string config;
+  double resolution = 0.05;
+  bool unfiltered = false;
+  double carmen_range_max = 80.0;
+};
+
 int runDiff(const DiffOptions& options);
+int runMap(const MapOptions& options);
 int runSimulate(const SimulateOptions& options);
 int runReplay(const ReplayOptions& options);
 int runRender(const RenderOptionsCli& options);

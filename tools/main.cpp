@@ -56,6 +56,15 @@ int main(int argc, char** argv) {
   dif->add_option("first", diff.first, "scan log with labels")->required()->check(CLI::ExistingFile);
   dif->add_option("second", diff.second, "scan log with labels")->required()->check(CLI::ExistingFile);
 
+  MapOptions map;
+  auto* mp = app.add_subcommand("map", "Build an occupancy map (ROS map_server PGM + YAML, PNG) from a log");
+  mp->add_option("input", map.input, "scan log or CARMEN log")->required()->check(CLI::ExistingFile);
+  mp->add_option("-o,--output", map.output, "base path of the map files")->required();
+  mp->add_option("--config", map.config, "filter config YAML")->check(CLI::ExistingFile);
+  mp->add_option("--resolution", map.resolution, "cell size (m)")->capture_default_str()->check(CLI::Range(0.005, 10.0));
+  mp->add_flag("--unfiltered", map.unfiltered, "map every return, without the filter (for comparison)");
+  mp->add_option("--carmen-range-max", map.carmen_range_max, "CARMEN logs: ranges at or above this are no return (m)")->capture_default_str();
+
   CLI11_PARSE(app, argc, argv);
   spdlog::set_level(spdlog::level::from_str(log_level));
   try {
@@ -64,6 +73,7 @@ int main(int argc, char** argv) {
     if (*ren) return runRender(render);
     if (*inf) return runInfo(info);
     if (*dif) return runDiff(diff);
+    if (*mp) return runMap(map);
   } catch (const scanfilter::InputError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;

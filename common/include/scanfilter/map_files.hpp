@@ -1,0 +1,17 @@
+#pragma once
+#include <string>
+
+#include "scanfilter/occupancy_grid.hpp"
+
+namespace scanfilter {
+
+// Writes BASE.pgm + BASE.yaml (the ROS map_server format, trinary: 0
+// occupied, 254 free, 205 unknown), BASE.png for people, and BASE.logodds
+// (the exact state, to continue from). Every file is written to a temporary
+// name and renamed, so a crash never leaves a torn file.
+void saveMap(const OccupancyGrid& grid, const std::string& base);
+
+// Restores the exact state saved in BASE.logodds into `grid` (same params).
+void loadMapState(OccupancyGrid& grid, const std::string& base);
+
+}  // namespace scanfilter
