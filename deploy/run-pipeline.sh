@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Starts the pipeline's processes (penetration_filter, jump_filter,
-# scan_ingest) and a recorder of the labelled output, prints where the
-# metrics and the output are, and stops them all by PID on Ctrl-C or when
-# the ingest has published its whole source.
+# Starts the pipeline's processes (map_publisher, penetration_filter,
+# jump_filter, scan_ingest) and a recorder of the labelled output, prints
+# where the metrics and the output are, and stops them all by PID on Ctrl-C
+# or when the ingest has published its whole source (the map publisher then
+# saves the map).
 #
 #   deploy/run-pipeline.sh [--scene hall | --log FILE] [--rate recorded|max|FACTOR] [--out DIR] [--domain N]
 set -euo pipefail
@@ -21,6 +22,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 mkdir -p "$OUT"
+OUT="$(cd "$OUT" && pwd)"  # absolute: the configs written below are read from $OUT
 # The ingest's source, written as a config next to the output.
 INGEST_CFG="$OUT/scan_ingest.yaml"
 {
@@ -32,6 +34,10 @@ INGEST_CFG="$OUT/scan_ingest.yaml"
   fi
 } > "$INGEST_CFG"
 
+MAP_CFG="$OUT/map_publisher.yaml"
+echo "service: {domain_id: $DOMAIN, profiles_file: $ROOT/deploy/fastdds-loopback.xml, metrics_address: 127.0.0.1:9474}" > "$MAP_CFG"
+echo "publishing: {save_path: $OUT/map}" >> "$MAP_CFG"
+
 PIDS=()
 stop_all() {
   for pid in "${PIDS[@]}"; do kill -TERM "$pid" 2>/dev/null || true; done
@@ -39,6 +45,7 @@ stop_all() {
 }
 trap 'stop_all; exit 130' INT TERM
 
+"$BIN/services/map_publisher" --config "$MAP_CFG" > "$OUT/map_publisher.log" 2>&1 & PIDS+=($!)
 "$BIN/services/penetration_filter" --domain "$DOMAIN" > "$OUT/penetration_filter.log" 2>&1 & PIDS+=($!)
 "$BIN/services/jump_filter" --domain "$DOMAIN" > "$OUT/jump_filter.log" 2>&1 & PIDS+=($!)
 "$BIN/tools/scan_recorder" --domain "$DOMAIN" --idle-exit 2 -o "$OUT/pipeline.labeled.scanlog.jsonl" \
@@ -59,11 +66,11 @@ done
 PIDS+=($INGEST)
 
 echo "pipeline running on DDS domain $DOMAIN (localhost only); logs in $OUT/"
-echo "metrics: http://127.0.0.1:9471/metrics (scan_ingest), :9472 (jump_filter), :9473 (penetration_filter)"
-echo "topics:  rt/posed_scan -> rt/jump_filtered_scan -> rt/labeled_scan and rt/scan_filtered (sensor_msgs/LaserScan)"
+echo "metrics: http://127.0.0.1:9471/metrics (scan_ingest), :9472 (jump_filter), :9473 (penetration_filter), :9474 (map_publisher)"
+echo "topics:  rt/posed_scan -> rt/jump_filtered_scan -> rt/labeled_scan and rt/scan_filtered (sensor_msgs/LaserScan) -> rt/map"
 status=0
 wait "$INGEST" || status=$?
 wait "$RECORDER" || true  # it exits 2 s after the last scan arrived
 stop_all
-echo "scan_ingest exited with $status; labelled output: $OUT/pipeline.labeled.scanlog.jsonl"
+echo "scan_ingest exited with $status; labelled output: $OUT/pipeline.labeled.scanlog.jsonl; map: $OUT/map.png (+ .pgm/.yaml)"
 exit "$status"

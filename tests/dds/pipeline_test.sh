@@ -4,7 +4,7 @@
 # domain id with the loopback-only profile.
 #
 #   pipeline_test.sh BUILD_DIR SOURCE_DIR CASE
-#   CASE: labels | metrics | prometheus | live | cyclone | bad_samples | config
+#   CASE: labels | metrics | prometheus | live | cyclone | bad_samples | map | config
 set -euo pipefail
 BUILD="$1" SRC="$2" CASE="$3"
 if [ -z "${SCANFILTER_IN_NETNS:-}" ] && [ "$(id -u)" = 0 ] && unshare -n true 2>/dev/null; then
@@ -198,9 +198,38 @@ bad_samples)
   done
   kill -0 "$JUMP" || fail "jump_filter died"
   ;;
+map)
+  # The map publisher: a subscriber that joins after the map was published
+  # gets it at once (transient local), and the map it saves on SIGTERM has
+  # exactly the cells `scanfilter map` builds offline from the same log.
+  start_filters
+  cat > "$WORK/map.yaml" <<YAML
+service: {domain_id: $DOMAIN, profiles_file: $SRC/deploy/fastdds-loopback.xml, metrics_address: 127.0.0.1:19474}
+publishing: {rate_hz: 5, save_path: $WORK/live_map, save_period_s: 1000}
+YAML
+  "$BUILD/services/map_publisher" --config "$WORK/map.yaml" > "$WORK/map.log" 2>&1 &
+  MAP=$!; PIDS+=($MAP)
+  wait_matched 19472 rt/jump_filtered_scan
+  wait_matched 19473 rt/labeled_scan
+  run_ingest "$WORK/in.scanlog.jsonl"
+  for _ in $(seq 1 200); do
+    [ "$(metric 19474 'scanfilter_scans_received_total\{service="map_publisher"\}')" = $FRAMES ] && break
+    sleep 0.1
+  done
+  sleep 0.5  # one more publishing period after the last scan
+  probe=$("$BUILD/tests/map_probe" "$DOMAIN" "$SRC/deploy/fastdds-loopback.xml") || fail "the late subscriber got no map"
+  echo "late subscriber: $probe"
+  read -r width height resolution occupied <<< "$probe"
+  [ "$width" -gt 100 ] && [ "$height" -gt 100 ] && [ "$resolution" = 0.050 ] && [ "$occupied" -gt 100 ] ||
+    fail "implausible map: $probe"
+  kill -TERM "$MAP"; wait "$MAP" || fail "map_publisher exited non-zero"
+  "$SF" map "$WORK/in.scanlog.jsonl" --config "$SRC/config/filter.yaml" -o "$WORK/offline_map" > /dev/null
+  cmp "$WORK/live_map.logodds" "$WORK/offline_map.logodds" || fail "live and offline maps differ"
+  cmp "$WORK/live_map.pgm" "$WORK/offline_map.pgm" || fail "live and offline PGMs differ"
+  ;;
 config)
   # A broken config stops each service with a non-zero exit and names the key.
-  for svc in scan_ingest jump_filter penetration_filter; do
+  for svc in scan_ingest jump_filter penetration_filter map_publisher; do
     sed 's/^  queue_depth: 64/  queue_depht: 64/' "$SRC/config/$svc.yaml" > "$WORK/$svc.yaml"
     grep -q queue_depht "$WORK/$svc.yaml" || printf 'service:\n  queue_depht: 64\n' > "$WORK/$svc.yaml"
     sed -i "s#profiles_file: ../deploy#profiles_file: $SRC/deploy#; s#config: filter.yaml#config: $SRC/config/filter.yaml#" "$WORK/$svc.yaml"

@@ -12,12 +12,6 @@ using namespace prometheus;
 
 namespace {
 
-// Microseconds to tens of milliseconds: a filter step takes tens of µs, a
-// DDS hop hundreds of µs, a slow pipeline tens of ms.
-Histogram::BucketBoundaries latencyBuckets() {
-  return {1e-5, 2.5e-5, 5e-5, 1e-4, 2.5e-4, 5e-4, 1e-3, 2.5e-3, 5e-3, 1e-2, 2.5e-2, 5e-2, 1e-1};
-}
-
 double residentBytes() {
   std::ifstream statm("/proc/self/statm");
   long pages_total = 0, pages_resident = 0;
@@ -26,6 +20,12 @@ double residentBytes() {
 }
 
 }  // namespace
+
+// Microseconds to tens of milliseconds: a filter step takes tens of µs, a
+// DDS hop hundreds of µs, a slow pipeline tens of ms.
+Histogram::BucketBoundaries ServiceMetrics::latencyBuckets() {
+  return {1e-5, 2.5e-5, 5e-5, 1e-4, 2.5e-4, 5e-4, 1e-3, 2.5e-3, 5e-3, 1e-2, 2.5e-2, 5e-2, 1e-1};
+}
 
 ServiceMetrics::ServiceMetrics(const std::string& service, const std::string& address, const std::string& version)
     : service_(service),

@@ -35,6 +35,9 @@ class ServiceMetrics {
   void updateProcessStats();
 
   const std::string& address() const { return address_; }
+  // For a service's own metrics (same endpoint, same conventions).
+  prometheus::Registry& registry() { return *registry_; }
+  static prometheus::Histogram::BucketBoundaries latencyBuckets();
 
  private:
   std::string service_;
