@@ -116,7 +116,7 @@ prometheus)
   # The real Prometheus server scrapes all three services with the scrape
   # config from deploy/; its query API shows them up and the counters.
   command -v prometheus > /dev/null || fail "prometheus is not installed (scripts/install-deps.sh)"
-  sed 's/:947\([123]\)"/:1947\1"/g; s/scrape_interval: 5s/scrape_interval: 1s/' "$SRC/deploy/prometheus.yml" > "$WORK/prometheus.yml"
+  sed 's/:947\([1234]\)"/:1947\1"/g; s/scrape_interval: 5s/scrape_interval: 1s/' "$SRC/deploy/prometheus.yml" > "$WORK/prometheus.yml"
   prometheus --config.file="$WORK/prometheus.yml" --web.listen-address=127.0.0.1:19090 \
     --storage.tsdb.path="$WORK/tsdb" > "$WORK/prometheus.log" 2>&1 &
   PROM=$!; PIDS+=($PROM)
