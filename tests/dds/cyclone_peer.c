@@ -8,7 +8,9 @@
  * The scene: the robot in the middle of a round room of radius 2 m; in each
  * scan one beam, a different one each time as a mixed return would be,
  * returns a lone point at 3.5 m: the jump filter must remove it, and
- * rt/scan_filtered must carry +inf there (REP 117). */
+ * rt/scan_filtered must carry +inf there (REP 117). Last, it reads rt/map
+ * (transient local) and checks the round room in it: size, resolution, a
+ * wall cell occupied and a cell inside free. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -88,6 +90,7 @@ int main(int argc, char **argv) {
   dds_entity_t t_odom = dds_create_topic(pp, &nav_msgs_msg_dds__Odometry__desc, "rt/odom", NULL, NULL);
   dds_entity_t t_filtered = dds_create_topic(pp, &sensor_msgs_msg_dds__LaserScan__desc, "rt/scan_filtered", NULL, NULL);
   dds_entity_t t_labeled = dds_create_topic(pp, &scanfilter_msgs_msg_dds__LabeledScan__desc, "rt/labeled_scan", NULL, NULL);
+  dds_entity_t t_map = dds_create_topic(pp, &nav_msgs_msg_dds__OccupancyGrid__desc, "rt/map", NULL, NULL);
 
   dds_qos_t *reliable = dds_create_qos();
   dds_qset_reliability(reliable, DDS_RELIABILITY_RELIABLE, DDS_SECS(1));
@@ -96,6 +99,12 @@ int main(int argc, char **argv) {
   dds_entity_t w_odom = dds_create_writer(pp, t_odom, reliable, NULL);
   dds_entity_t r_filtered = dds_create_reader(pp, t_filtered, reliable, NULL);
   dds_entity_t r_labeled = dds_create_reader(pp, t_labeled, reliable, NULL);
+  dds_qos_t *latched = dds_create_qos();
+  dds_qset_reliability(latched, DDS_RELIABILITY_RELIABLE, DDS_SECS(1));
+  dds_qset_durability(latched, DDS_DURABILITY_TRANSIENT_LOCAL);
+  dds_qset_history(latched, DDS_HISTORY_KEEP_LAST, 1);
+  dds_entity_t r_map = dds_create_reader(pp, t_map, latched, NULL);
+  dds_delete_qos(latched);
   dds_delete_qos(reliable);
   /* Both directions matched before the first scan: the pipeline's output
    * topics are volatile, so a late reader would miss the first scans. */
@@ -152,8 +161,34 @@ int main(int argc, char **argv) {
     }
     dds_sleepfor(DDS_MSECS(10));
   }
+  /* The map of the round room: the newest sample once every scan is in. */
+  int map_ok = 0;
+  const dds_time_t map_deadline = dds_time() + DDS_SECS(10);
+  while (!map_ok && dds_time() < map_deadline) {
+    void *samples[1] = {NULL};
+    dds_sample_info_t info[1];
+    if (dds_take(r_map, samples, info, 1, 1) > 0) {
+      if (info[0].valid_data) {
+        const nav_msgs_msg_dds__OccupancyGrid_ *m = samples[0];
+        const double res = m->info.resolution;
+        const int w = (int)m->info.width, h = (int)m->info.height;
+        const double ox = m->info.origin.position.x, oy = m->info.origin.position.y;
+        const int wall = (int)((ROOM_RADIUS - 0.01 - oy) / res) * w + (int)((0.0 - ox) / res);   /* (0, 2): on the wall */
+        const int inside = (int)((0.0 - oy) / res) * w + (int)((1.0 - ox) / res);               /* (1, 0): free */
+        const int expected_side = (int)(2 * ROOM_RADIUS / res);
+        map_ok = fabs(res - 0.05) < 1e-6 && abs(w - expected_side) <= 3 && abs(h - expected_side) <= 3 &&
+                 wall >= 0 && wall < w * h && m->data._buffer[wall] >= 65 && m->data._buffer[inside] >= 0 &&
+                 m->data._buffer[inside] < 20;
+        printf("cyclone_peer: rt/map %d x %d at %.3f m, wall cell %d, inside cell %d\n", w, h, res,
+               wall >= 0 && wall < w * h ? m->data._buffer[wall] : -2, m->data._buffer[inside]);
+      }
+      dds_return_loan(r_map, samples, 1);
+    } else {
+      dds_sleepfor(DDS_MSECS(50));
+    }
+  }
   dds_delete(pp);
-  printf("cyclone_peer: sent %d scans; got %d on rt/scan_filtered, %d on rt/labeled_scan, %d wrong\n", scans,
-         got_filtered, got_labeled, bad);
-  return got_filtered == scans && got_labeled == scans && bad == 0 ? 0 : 1;
+  printf("cyclone_peer: sent %d scans; got %d on rt/scan_filtered, %d on rt/labeled_scan, %d wrong; map %s\n", scans,
+         got_filtered, got_labeled, bad, map_ok ? "right" : "WRONG or missing");
+  return got_filtered == scans && got_labeled == scans && bad == 0 && map_ok ? 0 : 1;
 }

@@ -169,7 +169,7 @@ YAML
   ;;
 cyclone)
   # Another vendor's DDS (Cyclone, localhost only) drives the live ingest and
-  # subscribes to the filtered LaserScan and the labelled scan.
+  # subscribes to the filtered LaserScan, the labelled scan and the map.
   export CYCLONEDDS_URI='<CycloneDDS><Domain id="any"><General><Interfaces><NetworkInterface address="127.0.0.1" multicast="false"/></Interfaces><AllowMulticast>false</AllowMulticast></General><Discovery><ParticipantIndex>auto</ParticipantIndex><MaxAutoParticipantIndex>20</MaxAutoParticipantIndex><Peers><Peer Address="127.0.0.1"/></Peers></Discovery></Domain></CycloneDDS>'
   start_filters
   cat > "$WORK/ingest.yaml" <<YAML
@@ -177,6 +177,10 @@ service: {domain_id: $DOMAIN, profiles_file: $SRC/deploy/fastdds-loopback.xml, m
 source: {kind: live}
 live: {scan_topic: scan, odom_topic: odom, mount: [0.0, 0.0, 0.0], reliable: true}
 YAML
+  printf 'service: {domain_id: %s, profiles_file: %s, metrics_address: 127.0.0.1:19474}\npublishing: {rate_hz: 5}\n' \
+    "$DOMAIN" "$SRC/deploy/fastdds-loopback.xml" > "$WORK/map.yaml"
+  "$BUILD/services/map_publisher" --config "$WORK/map.yaml" > "$WORK/map.log" 2>&1 &
+  PIDS+=($!)
   wait_matched 19472 rt/jump_filtered_scan
   "$BUILD/services/scan_ingest" --config "$WORK/ingest.yaml" > "$WORK/ingest.log" 2>&1 &
   INGEST=$!; PIDS+=($INGEST)
