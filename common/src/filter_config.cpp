@@ -9,9 +9,7 @@ namespace scanfilter {
 
 namespace {
 
-using Section = YamlSection;
-
-void readJump(Section& s, FilterConfig& config) {
+void readJump(YamlSection& s, FilterConfig& config) {
   JumpFilterParams& p = config.params.jump;
   s.read("enabled", config.params.jump_enabled);
   s.readAuto("angular_accuracy_deg", config.angular_accuracy_deg);
@@ -33,7 +31,7 @@ void readJump(Section& s, FilterConfig& config) {
   s.rejectUnknownKeys();
 }
 
-void readPenetration(Section& s, FilterConfig& config) {
+void readPenetration(YamlSection& s, FilterConfig& config) {
   PenetrationFilterParams& p = config.params.penetration;
   s.read("enabled", config.params.penetration_enabled);
   s.read("cell_size", p.cell_size);
@@ -87,9 +85,9 @@ FilterConfig filterConfigFromYaml(const YAML::Node& root, const std::string& nam
       throw InputError(name, static_cast<std::size_t>(entry.first.Mark().line) + 1, key,
                        "unknown section; expected jump_filter or penetration_filter");
   }
-  Section jump(root, "jump_filter", name);
+  YamlSection jump(root, "jump_filter", name);
   readJump(jump, config);
-  Section penetration(root, "penetration_filter", name);
+  YamlSection penetration(root, "penetration_filter", name);
   readPenetration(penetration, config);
   return config;
 }

@@ -90,12 +90,6 @@ void FastJumpFilter::claim(std::uint32_t i) {
 
 void FastJumpFilter::visitFreeIn(std::uint32_t from, std::uint32_t to, std::uint32_t member,
                                  double radius_sq) {
-  // A short window is cheaper to scan than to skip through.
-  if (to - from < kShortWindow) {
-    for (std::uint32_t j = from; j <= to; ++j)
-      if (free_[j] && isNeighbour(member, j, radius_sq)) claim(j);
-    return;
-  }
   for (std::uint32_t j = nextFree(from); j <= to; j = nextFree(j + 1)) {
     if (isNeighbour(member, j, radius_sq)) claim(j);
   }

@@ -86,17 +86,15 @@ void ScanRenderer::save(const std::string& path, const RenderOptions& options) c
     return panel;
   };
 
-  const int panels = options.before_after ? 2 : 1;
-  PngImage image(panels * pw + (panels + 1) * kMargin, ph + kTitleHeight + kLegendHeight + kMargin, kBackground);
+  constexpr int kPanels = 2;
+  constexpr int kCaptionY = kMargin + 2 * kTextScale * 4;
+  PngImage image(kPanels * pw + (kPanels + 1) * kMargin, ph + kTitleHeight + kLegendHeight + kMargin, kBackground);
   image.text(kMargin, kMargin / 2, options.title, kTextColour, kTextScale);
-  int x = kMargin;
-  if (options.before_after) {
-    image.text(x, kMargin + 2 * kTextScale * 4, "BEFORE (COLOUR = TRUTH)", kTextColour, kTextScale);
-    image.paste(drawPanel(false), x, kTitleHeight + kMargin / 2);
-    x += pw + kMargin;
-  }
-  image.text(x, kMargin + 2 * kTextScale * 4, "AFTER (COLOUR = FILTER LABEL)", kTextColour, kTextScale);
-  image.paste(drawPanel(true), x, kTitleHeight + kMargin / 2);
+  const int before_x = kMargin, after_x = 2 * kMargin + pw;
+  image.text(before_x, kCaptionY, "BEFORE (COLOUR = TRUTH)", kTextColour, kTextScale);
+  image.paste(drawPanel(false), before_x, kTitleHeight + kMargin / 2);
+  image.text(after_x, kCaptionY, "AFTER (COLOUR = FILTER LABEL)", kTextColour, kTextScale);
+  image.paste(drawPanel(true), after_x, kTitleHeight + kMargin / 2);
 
   // Legend.
   const int ly = ph + kTitleHeight + kMargin;

@@ -124,6 +124,7 @@ int main(int argc, char** argv) {
     const prometheus::Labels labels{{"service", "map_publisher"}};
     auto& cells = prometheus::BuildGauge().Name("scanfilter_map_cells").Help("Cells in the map's bounds").Register(metrics.registry()).Add(labels);
     auto& bytes = prometheus::BuildGauge().Name("scanfilter_map_memory_bytes").Help("Memory of the map's tiles").Register(metrics.registry()).Add(labels);
+    auto& integrated = prometheus::BuildCounter().Name("scanfilter_map_scans_integrated_total").Help("Scans integrated into the map").Register(metrics.registry()).Add(labels);
     auto& occupied = prometheus::BuildGauge().Name("scanfilter_map_occupied_cells").Help("Cells above occupied_threshold").Register(metrics.registry()).Add(labels);
     auto& publish_time = prometheus::BuildHistogram().Name("scanfilter_map_publish_seconds").Help("Time to build and publish rt/map")
                              .Register(metrics.registry()).Add(labels, ServiceMetrics::latencyBuckets());
@@ -138,7 +139,6 @@ int main(int argc, char** argv) {
     std::mutex mutex;
     Scan scan;
     SensorInfo sensor;
-    std::vector<std::uint8_t> scan_labels;
     TypedReader<scanfilter_msgs::msg::dds_::LabeledScan_PubSubType> reader(
         participant, rosTopic(ns, kLabeledScanTopic), losslessReaderQos(config.service.stream), [&](LabeledScanMsg& msg) {
           metrics.scanReceived();
@@ -149,6 +149,7 @@ int main(int argc, char** argv) {
           fromMessage(msg, scan, sensor);
           std::lock_guard lock(mutex);
           grid.integrate(scan, sensor, scan.labels);
+          integrated.Increment();
         });
     spdlog::info("started: domain {}, {} -> {} and {}, metrics http://{}/metrics", config.service.participant.domain_id,
                  rosTopic(ns, kLabeledScanTopic), rosTopic(ns, "map"), rosTopic(ns, "map_updates"), metrics.address());
@@ -173,7 +174,6 @@ int main(int argc, char** argv) {
           map_writer.write(map_msg);
           toUpdateMsg(grid, changed, publish.frame_id, update_msg);
           update_writer.write(update_msg);
-          metrics.scanPublished();
           last_publish = std::chrono::steady_clock::now();
           publish_time.Observe(std::chrono::duration<double>(last_publish - start).count());
           cells.Set(static_cast<double>(grid.bounds().width() * grid.bounds().height()));

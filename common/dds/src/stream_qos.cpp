@@ -10,11 +10,12 @@ namespace {
 constexpr int kRosDefaultDepth = 10;
 constexpr double kHeartbeatPeriodS = 0.01;
 
+}  // namespace
+
 eprosima::fastrtps::Duration_t toDuration(double seconds) {
   const auto whole = static_cast<int32_t>(std::floor(seconds));
   return {whole, static_cast<uint32_t>((seconds - whole) * 1e9)};
 }
-}  // namespace
 
 DataWriterQos losslessWriterQos(const StreamQos& q) {
   DataWriterQos qos = DATAWRITER_QOS_DEFAULT;

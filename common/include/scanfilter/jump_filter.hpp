@@ -65,7 +65,6 @@ class FastJumpFilter final : public JumpFilter {
 
   void claim(std::uint32_t i);
 
-  static constexpr std::uint32_t kShortWindow = 32;  // beams
   std::vector<std::uint32_t> next_free_;  // skip pointers over clustered points; [N] = N
   std::uint32_t half_window_ = 0;         // beams either side that can hold a neighbour
 };

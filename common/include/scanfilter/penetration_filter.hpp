@@ -43,7 +43,6 @@ class PenetrationFilter {
   void reset();
 
   const PenetrationGrid& grid() const { return grid_; }
-  const PenetrationGrid& evidenceGrid() const { return evidence_; }
   const PenetrationFilterParams& params() const { return params_; }
   std::size_t framesSinceReset() const { return frames_seen_; }
   std::size_t cachedFrames() const { return cache_.size(); }

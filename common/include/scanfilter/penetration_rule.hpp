@@ -19,8 +19,7 @@ class PenetrationRule {
 
   explicit PenetrationRule(const PenetrationFilterParams& params)
       : corridor_sq_(params.corridor_half_width * params.corridor_half_width),
-        outer_(params.require_both_sides ? std::max(params.corridor_half_width, params.straddle_half_width)
-                                         : params.corridor_half_width),
+        outer_(params.require_both_sides ? params.straddle_half_width : params.corridor_half_width),
         own_margin_(params.own_surface_margin),
         own_margin_per_m_(params.own_surface_margin_per_m),
         behind_sq_(params.behind_margin * params.behind_margin),

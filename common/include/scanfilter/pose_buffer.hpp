@@ -25,7 +25,6 @@ class PoseBuffer {
   // (the newest sample is older than it, but not by more than max_gap).
   bool mayStillPose(double stamp) const { return !samples_.empty() && samples_.back().stamp < stamp; }
 
-  double newestStamp() const { return samples_.empty() ? -1e300 : samples_.back().stamp; }
   std::size_t size() const { return samples_.size(); }
 
  private:

@@ -14,7 +14,6 @@ namespace scanfilter {
 struct RenderOptions {
   int panel_pixels = 800;  // the longer side of each panel
   std::string title;
-  bool before_after = true;  // false: only the labelled panel
 };
 
 // Draws scans in the world frame as PNG: "before" (every return, coloured by

@@ -21,7 +21,6 @@ class ScanSimulator final : public ScanSource {
   const ScanLogHeader& header() const override { return header_; }
   bool next(ScanRecord& record) override;
 
-  std::size_t frameCount() const { return poses_.size(); }
   const Scene& scene() const { return scene_; }
 
  private:

@@ -4,6 +4,9 @@
 
 namespace scanfilter::dds_io {
 
+// Seconds as a Fast DDS duration.
+eprosima::fastrtps::Duration_t toDuration(double seconds);
+
 // QoS of the scan streams between the pipeline's stages: reliable and
 // keep-all with a bounded queue, so a fast producer is slowed down by the
 // slowest consumer (write() blocks) instead of losing scans.

@@ -7,6 +7,7 @@
 #include <fastdds/dds/publisher/DataWriterListener.hpp>
 
 #include "scanfilter/dds/dds_participant.hpp"
+#include "scanfilter/dds/stream_qos.hpp"
 
 namespace scanfilter::dds_io {
 
@@ -36,10 +37,12 @@ class TypedWriter : private eprosima::fastdds::dds::DataWriterListener {
     max_wait_s_ = max_wait_s;
   }
 
-  // False when the sample could not be written, or (with flow control) was
-  // not acknowledged in time by a reader that does not keep up.
+  // False when Fast DDS refused the sample, or (with flow control) when the
+  // readers did not acknowledge the window in time: the stream is stalled.
   bool write(Sample& sample) {
-    if (!writeOnce(sample)) return false;
+    const auto rc = writer_->write(&sample, eprosima::fastrtps::rtps::InstanceHandle_t());
+    last_error_ = rc();
+    if (rc != eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK) return false;
     if (window_ > 0 && ++unacknowledged_ >= window_) {
       unacknowledged_ = 0;
       if (!waitForAcknowledgments(max_wait_s_)) {
@@ -50,25 +53,14 @@ class TypedWriter : private eprosima::fastdds::dds::DataWriterListener {
     return true;
   }
 
- private:
-  bool writeOnce(Sample& sample) {
-    const auto rc = writer_->write(&sample, eprosima::fastrtps::rtps::InstanceHandle_t());
-    last_error_ = rc();
-    return rc == eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK;
-  }
-
- public:
-  // The Fast DDS return code of the last failed write (for the log).
-  int lastError() const { return last_error_; }
-
-  int matchedReaders() const { return matched_.load(); }
-
   // Waits until every matched reader acknowledged every sample written.
   bool waitForAcknowledgments(double seconds) {
-    const auto whole = static_cast<int32_t>(seconds);
-    return writer_->wait_for_acknowledgments({whole, static_cast<uint32_t>((seconds - whole) * 1e9)}) ==
-           eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK;
+    return writer_->wait_for_acknowledgments(toDuration(seconds)) == eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK;
   }
+
+  // The Fast DDS return code of the last failed write (for the log).
+  int lastError() const { return last_error_; }
+  int matchedReaders() const { return matched_.load(); }
 
  private:
   void on_publication_matched(eprosima::fastdds::dds::DataWriter*,
