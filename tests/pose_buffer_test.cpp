@@ -36,6 +36,8 @@ TEST(PoseBuffer, NoPoseOutOfReachOrOutsideTheSamples) {
   EXPECT_FALSE(buffer.at(0.5)) << "before the first sample";
   EXPECT_FALSE(buffer.at(2.5)) << "after the last sample";
   EXPECT_TRUE(buffer.mayStillPose(2.5));
+  EXPECT_FALSE(buffer.mayStillPose(1.5)) << "a later sample exists: the gap is final";
+  EXPECT_TRUE(PoseBuffer(0.1, 10.0).mayStillPose(0.0)) << "no odometry yet: wait for it";
   EXPECT_TRUE(buffer.at(2.0));
 }
 

@@ -24,6 +24,10 @@ using namespace scanfilter::dds_io;
 namespace {
 
 constexpr int kSensorQueueDepth = 10;
+// Discovery is asymmetric: the writer can see the reader matched before the
+// reader has matched the writer, and a volatile sample sent in between is
+// lost even on a reliable stream. A short wait after matching closes that gap.
+constexpr auto kDiscoverySettle = std::chrono::milliseconds(300);
 
 // The scan as a ROS LaserScan: counter-clockwise angles, no return as NaN.
 void toLaserScan(const Scan& scan, const SensorInfo& sensor, const std::string& frame, LaserScanMsg& out) {
@@ -72,6 +76,7 @@ int main(int argc, char** argv) {
     TypedWriter<nav_msgs::msg::dds_::Odometry_PubSubType> odometry(participant, rosTopic(ns, "odom"), qos);
     while (scans.matchedReaders() < wait_readers || odometry.matchedReaders() < wait_readers)
       if (ShutdownSignal::waitFor(std::chrono::milliseconds(50))) return 0;
+    if (ShutdownSignal::waitFor(kDiscoverySettle)) return 0;
     // The sensor's mount becomes the odometry's base pose offset: publish the
     // base pose; the live ingest is told the mount in its config.
     ScanRecord record;
@@ -100,6 +105,11 @@ int main(int argc, char** argv) {
     // One more odometry sample after the last scan, so it too can be posed.
     odom_msg.header().stamp(toTimeMsg(record.scan.stamp + 1e-3));
     odometry.write(odom_msg);
+    // Reliable streams: exiting deletes the writers, and with them whatever
+    // the readers have not acknowledged yet.
+    constexpr double kDrainSeconds = 5.0;
+    scans.waitForAcknowledgments(kDrainSeconds);
+    odometry.waitForAcknowledgments(kDrainSeconds);
     std::cout << "published " << published << " scans\n";
   } catch (const std::exception& e) {
     std::cerr << "ros_scan_publisher: error: " << e.what() << "\n";

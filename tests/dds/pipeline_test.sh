@@ -160,7 +160,7 @@ YAML
   INGEST=$!; PIDS+=($INGEST)
   "$BUILD/tools/ros_scan_publisher" --domain "$DOMAIN" --rate 50 --reliable "$WORK/live_in.scanlog.jsonl" > "$WORK/publisher.log" 2>&1 ||
     fail "ros_scan_publisher failed"
-  wait "$REC" || fail "recorder did not get $LIVE scans"
+  wait "$REC" || fail "recorder did not get $LIVE scans; ingest: $(curl -s http://127.0.0.1:19471/metrics | grep -E '^scanfilter_(scans|samples)' | tr '\n' ' ')"
   kill -TERM "$INGEST"; wait "$INGEST" || fail "scan_ingest exited non-zero"
   path_in=$("$SF" info "$WORK/live_in.scanlog.jsonl" | sed -n 's/.*path \([0-9.]*\) m/\1/p')
   path_out=$("$SF" info "$WORK/live.scanlog.jsonl" | sed -n 's/.*path \([0-9.]*\) m/\1/p')

@@ -21,9 +21,10 @@ class PoseBuffer {
   // or farther than max_gap.
   std::optional<Pose2> at(double stamp) const;
 
-  // True when a later sample may still arrive that would pose `stamp`
-  // (the newest sample is older than it, but not by more than max_gap).
-  bool mayStillPose(double stamp) const { return !samples_.empty() && samples_.back().stamp < stamp; }
+  // True when a later sample may still arrive that would pose `stamp`: none
+  // has arrived yet, or the newest is older than it. (Odometry and scans come
+  // on separate streams; the first scan often arrives before any odometry.)
+  bool mayStillPose(double stamp) const { return samples_.empty() || samples_.back().stamp < stamp; }
 
   std::size_t size() const { return samples_.size(); }
 
