@@ -14,9 +14,7 @@ void TwoStepFilter::apply(const Scan& scan, const SensorInfo& sensor,
   if (params_.jump_enabled) {
     jump_->apply(scan, sensor, labels);
   } else {
-    for (std::size_t i = 0; i < scan.size(); ++i)
-      labels[i] = static_cast<std::uint8_t>(scan.hasReturn(i) ? PointCode::kValid
-                                                               : PointCode::kNoReturn);
+    labelReturns(scan, labels);
   }
   if (params_.penetration_enabled) penetration_->apply(scan, sensor, labels);
 }

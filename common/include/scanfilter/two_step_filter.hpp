@@ -6,6 +6,7 @@
 #include "scanfilter/implementation.hpp"
 #include "scanfilter/jump_filter.hpp"
 #include "scanfilter/penetration_filter.hpp"
+#include "scanfilter/scan_filter.hpp"
 
 namespace scanfilter {
 
@@ -18,11 +19,11 @@ struct TwoStepFilterParams {
 
 // Both steps in order; one code per beam (point_code.hpp). A beam that both
 // steps would remove keeps step 1's code.
-class TwoStepFilter {
+class TwoStepFilter final : public ScanFilter {
  public:
   TwoStepFilter(const TwoStepFilterParams& params, Implementation impl);
 
-  void apply(const Scan& scan, const SensorInfo& sensor, std::span<std::uint8_t> labels);
+  void apply(const Scan& scan, const SensorInfo& sensor, std::span<std::uint8_t> labels) override;
   const PenetrationFilter& penetration() const { return *penetration_; }
   const TwoStepFilterParams& params() const { return params_; }
 
