@@ -6,24 +6,15 @@
 
 #include "scanfilter/filter_config.hpp"
 #include "scanfilter/removal_score.hpp"
-#include "scanfilter/sim/scan_simulator.hpp"
+#include "scanfilter/sim/labelled_log.hpp"
 #include "scanfilter/two_step_filter.hpp"
 
 namespace scanfilter::bench {
 
-struct LabelledLog {
-  std::string scene;
-  SensorInfo sensor;
-  std::vector<Scan> scans;
-};
+using sim::LabelledLog;
 
 inline LabelledLog simulateScene(const std::string& name, std::uint64_t seed, int max_frames = 0) {
-  sim::ScanSimulator simulator(sim::findScene(name), seed);
-  LabelledLog log{name, simulator.header().sensor, {}};
-  ScanRecord record;
-  while ((max_frames == 0 || static_cast<int>(log.scans.size()) < max_frames) && simulator.next(record))
-    log.scans.push_back(record.scan);
-  return log;
+  return sim::simulateLog(sim::findScene(name), seed, name, max_frames);
 }
 
 inline std::vector<LabelledLog> simulateAllScenes(std::uint64_t seed, int max_frames = 0) {

@@ -1,6 +1,7 @@
 #pragma once
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace scanfilter::cli {
 
@@ -49,6 +50,19 @@ struct MapOptions {
   double carmen_range_max = 80.0;
 };
 
+struct BenchAccuracyOptions {
+  std::vector<std::string> logs;       // labelled logs scored on (empty: built-in scenes at test_seeds)
+  std::vector<std::string> tune_logs;  // labelled logs tuned on (empty: built-in scenes at tune_seed)
+  std::uint64_t tune_seed = 1;
+  std::vector<std::uint64_t> test_seeds = {2, 3};
+  std::size_t budget = 24;  // sweep evaluations per filter
+  std::string config;       // our filter's config (empty: built-in defaults)
+  std::string output_dir;   // figures and accuracy-comparison.md; empty: stdout only
+  bool robustness = true;
+  int max_frames = 0;  // per simulated log, 0: whole trajectory
+};
+
+int runBenchAccuracy(const BenchAccuracyOptions& options);
 int runDiff(const DiffOptions& options);
 int runMap(const MapOptions& options);
 int runSimulate(const SimulateOptions& options);

@@ -65,6 +65,19 @@ int main(int argc, char** argv) {
   mp->add_flag("--unfiltered", map.unfiltered, "map every return, without the filter (for comparison)");
   mp->add_option("--carmen-range-max", map.carmen_range_max, "CARMEN logs: ranges at or above this are no return (m)")->capture_default_str();
 
+  BenchAccuracyOptions bench;
+  auto* ben = app.add_subcommand("bench-accuracy",
+                                 "Compare the two-step filter with the baselines on labelled logs (equal tuning budgets)");
+  ben->add_option("logs", bench.logs, "labelled scan logs to score on (default: built-in scenes at --seeds)")->check(CLI::ExistingFile);
+  ben->add_option("--tune-log", bench.tune_logs, "labelled scan log to tune on (repeatable; default: built-in scenes at --tune-seed)")->check(CLI::ExistingFile);
+  ben->add_option("--tune-seed", bench.tune_seed, "simulator seed of the tuning logs")->capture_default_str();
+  ben->add_option("--seeds", bench.test_seeds, "simulator seeds of the test logs")->delimiter(',')->capture_default_str();
+  ben->add_option("--budget", bench.budget, "sweep evaluations per filter")->capture_default_str()->check(CLI::Range(1, 10000));
+  ben->add_option("--config", bench.config, "our filter's config YAML (default: built-in defaults)")->check(CLI::ExistingFile);
+  ben->add_option("-o,--output-dir", bench.output_dir, "write accuracy-comparison.md and the PNG figures here");
+  ben->add_option("--max-frames", bench.max_frames, "scans per simulated log (0: whole trajectory)")->check(CLI::NonNegativeNumber);
+  ben->add_flag("!--no-robustness", bench.robustness, "skip the robustness variants (noise, resolution, drift)");
+
   CLI11_PARSE(app, argc, argv);
   spdlog::set_level(spdlog::level::from_str(log_level));
   try {
@@ -74,6 +87,7 @@ int main(int argc, char** argv) {
     if (*inf) return runInfo(info);
     if (*dif) return runDiff(diff);
     if (*mp) return runMap(map);
+    if (*ben) return runBenchAccuracy(bench);
   } catch (const scanfilter::InputError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;

@@ -9,6 +9,12 @@ bool isRemoved(std::uint8_t code) {
 }
 }  // namespace
 
+std::size_t rangeBand(double range) {
+  std::size_t band = 0;
+  while (band < kRangeBandEdges.size() && range >= kRangeBandEdges[band]) ++band;
+  return band;
+}
+
 void RemovalScore::add(const Scan& scan, std::span<const std::uint8_t> labels) {
   ++frames_;
   for (std::uint8_t code : labels) ++label_counts_[code];
@@ -27,6 +33,9 @@ void RemovalScore::add(const Scan& scan, std::span<const std::uint8_t> labels) {
     } else if (truth == PointCode::kValid) {
       ++valid_truth_;
       valid_deleted_ += isRemoved(labels[i]);
+      const std::size_t band = rangeBand(scan.ranges[i]);
+      ++valid_truth_by_band_[band];
+      valid_deleted_by_band_[band] += isRemoved(labels[i]);
     }
     RemovalClassScore* by_label = label == PointCode::kJump ? &jump_
                                   : label == PointCode::kMisdetected ? &misdetected_
@@ -52,6 +61,10 @@ void RemovalScore::add(const RemovalScore& o) {
   valid_deleted_ += o.valid_deleted_;
   thin_truth_ += o.thin_truth_;
   thin_kept_ += o.thin_kept_;
+  for (std::size_t b = 0; b < kRangeBandCount; ++b) {
+    valid_truth_by_band_[b] += o.valid_truth_by_band_[b];
+    valid_deleted_by_band_[b] += o.valid_deleted_by_band_[b];
+  }
 }
 
 }  // namespace scanfilter

@@ -54,7 +54,9 @@ void ScanRenderer::add(const Scan& scan, const SensorInfo& sensor, std::span<con
   }
 }
 
-void ScanRenderer::save(const std::string& path, const RenderOptions& options) const {
+void ScanRenderer::save(const std::string& path, const RenderOptions& options) const { draw(options).save(path); }
+
+PngImage ScanRenderer::draw(const RenderOptions& options) const {
   Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
   Eigen::Vector2d hi = -lo;
   for (const auto& pt : points_) lo = lo.cwiseMin(pt.p), hi = hi.cwiseMax(pt.p);
@@ -108,7 +110,7 @@ void ScanRenderer::save(const std::string& path, const RenderOptions& options) c
     image.text(lx + 22, ly, name, kTextColour, kTextScale);
     lx += 40 + static_cast<int>(std::string(name).size()) * 6 * kTextScale;
   }
-  image.save(path);
+  return image;
 }
 
 }  // namespace scanfilter

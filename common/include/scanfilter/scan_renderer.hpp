@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include "scanfilter/png_image.hpp"
 #include "scanfilter/scan.hpp"
 #include "scanfilter/sensor_info.hpp"
 
@@ -23,6 +24,7 @@ class ScanRenderer {
  public:
   void add(const Scan& scan, const SensorInfo& sensor, std::span<const std::uint8_t> labels);
   void save(const std::string& path, const RenderOptions& options) const;
+  PngImage draw(const RenderOptions& options) const;
   std::size_t pointCount() const { return points_.size(); }
 
  private:

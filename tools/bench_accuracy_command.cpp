@@ -1,0 +1,229 @@
+// `scanfilter bench-accuracy`: our filter against the baselines on labelled
+// logs, with equal tuning budgets, as markdown tables and PNG figures.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "accuracy_comparison.hpp"
+#include "commands.hpp"
+#include "scanfilter/input_error.hpp"
+#include "scanfilter/precision_recall_chart.hpp"
+#include "scanfilter/scan_renderer.hpp"
+#include "scanfilter/scan_source.hpp"
+#include "scanfilter/sim/odometry_drift.hpp"
+
+namespace scanfilter::cli {
+
+namespace {
+
+constexpr int kFigureFrames = 6;       // consecutive scans drawn per filter in the frames figure
+constexpr int kFigurePanelPixels = 420;
+
+using Logs = std::vector<sim::LabelledLog>;
+
+sim::LabelledLog readLabelledLog(const std::string& path) {
+  auto source = openScanSource(path);
+  sim::LabelledLog log{std::filesystem::path(path).filename().string(), source->header().sensor, {}};
+  ScanRecord record;
+  while (source->next(record)) {
+    if (record.scan.truth.empty())
+      throw InputError(path, record.line, "truth",
+                       "missing; bench-accuracy needs labelled logs (scanfilter simulate writes them)");
+    log.scans.push_back(std::move(record.scan));
+  }
+  return log;
+}
+
+// A built-in scene, changed as a robustness variant asks.
+struct SceneVariant {
+  std::string name;
+  double noise_factor = 1.0;
+  int beams = 0;  // 0: the scene's own
+  sim::OdometryDrift drift{};
+};
+
+Logs simulateScenes(const std::vector<std::uint64_t>& seeds, const SceneVariant& variant, int max_frames) {
+  Logs logs;
+  for (const auto& name : sim::builtinSceneNames()) {
+    sim::Scene scene = sim::findScene(name);
+    scene.lidar.noise_sigma_base *= variant.noise_factor;
+    scene.lidar.noise_sigma_quadratic *= variant.noise_factor;
+    if (variant.beams > 0) scene.lidar.beams = variant.beams;
+    for (auto seed : seeds) {
+      auto log = sim::simulateLog(scene, seed, name + " seed " + std::to_string(seed), max_frames);
+      sim::applyOdometryDrift(log.scans, variant.drift);
+      logs.push_back(std::move(log));
+    }
+  }
+  return logs;
+}
+
+std::string fmt(const char* format, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+std::string pct(double v) { return fmt("%.2f %%", 100.0 * v); }
+std::string prf(const RemovalScore& s, const RemovalClassScore& c) {
+  return fmt("%.3f", s.removalPrecision(c)) + " / " + fmt("%.3f", c.recall()) + " / **" + fmt("%.3f", s.removalF1(c)) + "**";
+}
+
+void comparisonTable(std::ostream& out, const std::vector<TunedFamily>& tuned, const std::vector<ScoredFilter>& as_default,
+                     const std::vector<ScoredFilter>& as_tuned) {
+  out << "| filter | parameters | jump P / R / F1 | misdetected P / R / F1 | artefacts F1 | valid deleted: all | "
+         "0.15-2 m | 2-4 m | 4-6 m | thin legs kept | µs / scan |\n"
+      << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (std::size_t f = 0; f < tuned.size(); ++f) {
+    for (int variant = 0; variant < 2; ++variant) {
+      const ScoredFilter& r = variant == 0 ? as_default[f] : as_tuned[f];
+      const ParamValues& values = variant == 0 ? tuned[f].defaults : tuned[f].tuned;
+      const RemovalScore& s = r.score;
+      out << "| " << tuned[f].family->name << (variant == 0 ? " (default)" : " (tuned)") << " | `"
+          << describe(*tuned[f].family, values) << "` | " << prf(s, s.jump()) << " | " << prf(s, s.misdetected())
+          << " | " << fmt("%.3f", s.artefactF1()) << " | " << pct(s.falseDeletionRate());
+      for (std::size_t b = 0; b < kRangeBandCount; ++b) out << " | " << pct(s.falseDeletionRate(b));
+      out << " | " << fmt("%.1f %%", 100.0 * s.thinLegRetention()) << " | " << fmt("%.0f", r.micros_per_scan) << " |\n";
+    }
+  }
+}
+
+void prChart(const std::string& path, const std::string& title, const std::vector<TunedFamily>& tuned,
+             const std::vector<ScoredFilter>& scored, bool jump) {
+  PrecisionRecallChart chart(title);
+  for (std::size_t f = 0; f < tuned.size(); ++f) {
+    const RemovalScore& s = scored[f].score;
+    const RemovalClassScore& c = jump ? s.jump() : s.misdetected();
+    chart.add(tuned[f].family->name, s.removalPrecision(c), c.recall(), seriesColour(f));
+  }
+  chart.draw().save(path);
+}
+
+// The window of kFigureFrames scans with the most artefacts in the truth.
+std::size_t busiestWindow(const sim::LabelledLog& log) {
+  std::vector<std::size_t> per_scan;
+  for (const auto& scan : log.scans)
+    per_scan.push_back(static_cast<std::size_t>(std::count_if(scan.truth.begin(), scan.truth.end(), [](std::uint8_t t) {
+      return t == static_cast<std::uint8_t>(PointCode::kJump) || t == static_cast<std::uint8_t>(PointCode::kMisdetected);
+    })));
+  std::size_t best = 0, best_sum = 0;
+  for (std::size_t i = 0; i + kFigureFrames <= per_scan.size(); ++i) {
+    std::size_t sum = 0;
+    for (int k = 0; k < kFigureFrames; ++k) sum += per_scan[i + static_cast<std::size_t>(k)];
+    if (sum > best_sum) best_sum = sum, best = i;
+  }
+  return best;
+}
+
+// Every filter's labels on the same frames of one log, stacked.
+void framesFigure(const std::string& path, const sim::LabelledLog& log, const std::vector<TunedFamily>& tuned) {
+  const std::size_t first = busiestWindow(log);
+  std::vector<PngImage> rows;
+  int width = 0, height = 0;
+  const Logs one{sim::LabelledLog{log.name, log.sensor,
+                                  std::vector<Scan>(log.scans.begin(),
+                                                    log.scans.begin() + static_cast<std::ptrdiff_t>(first + kFigureFrames))}};
+  for (const auto& t : tuned) {
+    std::vector<std::vector<std::vector<std::uint8_t>>> labels;
+    scoreFamily(*t.family, t.tuned, one, &labels);  // from the log's start: multi-frame filters need their history
+    ScanRenderer renderer;
+    for (std::size_t i = first; i < first + kFigureFrames; ++i) renderer.add(one[0].scans[i], log.sensor, labels[0][i]);
+    std::string title = t.family->name + " (tuned): " + log.name + " scans " + std::to_string(first) + "-" +
+                        std::to_string(first + kFigureFrames - 1);
+    std::transform(title.begin(), title.end(), title.begin(), [](unsigned char c) { return std::toupper(c); });
+    rows.push_back(renderer.draw({.panel_pixels = kFigurePanelPixels, .title = title}));
+    width = std::max(width, rows.back().width());
+    height += rows.back().height();
+  }
+  PngImage figure(width, height);
+  int y = 0;
+  for (const auto& row : rows) figure.paste(row, 0, y), y += row.height();
+  figure.save(path);
+}
+
+void robustnessTables(std::ostream& out, const std::vector<TunedFamily>& tuned, const BenchAccuracyOptions& options) {
+  const std::vector<SceneVariant> variants = {
+      {"as tested", 1.0, 0, {}},
+      {"range noise x2", 2.0, 0, {}},
+      {"0.5° resolution (720 beams)", 1.0, 720, {}},
+      {"0.25° resolution (1440 beams)", 1.0, 1440, {}},
+      {"odometry drift 1 %, 0.5°/m", 1.0, 0, {0.01, 0.5 * M_PI / 180.0}},
+      {"odometry drift 3 %, 2°/m", 1.0, 0, {0.03, 2.0 * M_PI / 180.0}},
+  };
+  std::ostringstream ours, all;
+  ours << "| variant | jump P / R / F1 | misdetected P / R / F1 | valid deleted | thin legs kept | µs / scan |\n"
+       << "|---|---|---|---|---|---|\n";
+  all << "| variant |";
+  for (const auto& t : tuned) all << " " << t.family->name << " |";
+  all << "\n|---|";
+  for (std::size_t f = 0; f < tuned.size(); ++f) all << "---|";
+  all << "\n";
+  for (const auto& variant : variants) {
+    std::cerr << "robustness: " << variant.name << "\n";
+    const Logs logs = simulateScenes(options.test_seeds, variant, options.max_frames);
+    all << "| " << variant.name << " |";
+    for (std::size_t f = 0; f < tuned.size(); ++f) {
+      const ScoredFilter r = scoreFamily(*tuned[f].family, tuned[f].tuned, logs);
+      const RemovalScore& s = r.score;
+      all << " " << fmt("%.3f", s.artefactF1()) << " (" << pct(s.falseDeletionRate()) << ") |";
+      if (f == 0)
+        ours << "| " << variant.name << " | " << prf(s, s.jump()) << " | " << prf(s, s.misdetected()) << " | "
+             << pct(s.falseDeletionRate()) << " | " << fmt("%.1f %%", 100.0 * s.thinLegRetention()) << " | "
+             << fmt("%.0f", r.micros_per_scan) << " |\n";
+    }
+    all << "\n";
+  }
+  out << "\n### Robustness of " << tuned[0].family->name << " (tuned parameters)\n\n" << ours.str()
+      << "\n### Robustness, every filter: artefacts F1 (valid deleted)\n\n" << all.str();
+}
+
+}  // namespace
+
+int runBenchAccuracy(const BenchAccuracyOptions& options) {
+  const FilterConfig ours = options.config.empty() ? FilterConfig{} : loadFilterConfig(options.config);
+  const auto families = comparisonFamilies(ours);
+  Logs tune_logs, test_logs;
+  for (const auto& path : options.tune_logs) tune_logs.push_back(readLabelledLog(path));
+  for (const auto& path : options.logs) test_logs.push_back(readLabelledLog(path));
+  if (tune_logs.empty()) tune_logs = simulateScenes({options.tune_seed}, SceneVariant{"tuning"}, options.max_frames);
+  if (test_logs.empty()) test_logs = simulateScenes(options.test_seeds, SceneVariant{"test"}, options.max_frames);
+
+  std::vector<TunedFamily> tuned;
+  std::vector<ScoredFilter> as_default, as_tuned;
+  for (const auto& family : families) {
+    std::cerr << "tuning " << family.name << " (" << options.budget << " evaluations at most)\n";
+    tuned.push_back(tuneFamily(family, tune_logs, options.budget));
+    as_default.push_back(scoreFamily(family, tuned.back().defaults, test_logs));
+    as_tuned.push_back(scoreFamily(family, tuned.back().tuned, test_logs));
+  }
+
+  std::ostringstream report;
+  std::size_t test_scans = 0;
+  for (const auto& log : test_logs) test_scans += log.scans.size();
+  report << "Scored on " << test_logs.size() << " logs (" << test_scans << " scans); each filter tuned with at most "
+         << options.budget << " evaluations on " << tune_logs.size()
+         << " other logs, ranked by artefacts F1. Precision is class-agnostic: removed points of the class against "
+            "valid points removed.\n\n";
+  comparisonTable(report, tuned, as_default, as_tuned);
+  report << "\nTuning (evaluations, artefacts F1 on the tuning logs):";
+  for (const auto& t : tuned) report << " " << t.family->name << " " << t.evaluations << ", " << fmt("%.3f", t.tuned_objective) << ";";
+  report << "\n";
+  if (options.robustness) robustnessTables(report, tuned, options);
+
+  if (!options.output_dir.empty()) {
+    std::filesystem::create_directories(options.output_dir);
+    const std::filesystem::path dir(options.output_dir);
+    prChart((dir / "compare-pr-jump.png").string(), "Jump points: precision / recall (tuned)", tuned, as_tuned, true);
+    prChart((dir / "compare-pr-misdetected.png").string(), "Misdetected points: precision / recall (tuned)", tuned,
+            as_tuned, false);
+    framesFigure((dir / "compare-frames.png").string(), test_logs.front(), tuned);
+    std::ofstream((dir / "accuracy-comparison.md").string()) << report.str();
+  }
+  std::cout << report.str();
+  return 0;
+}
+
+}  // namespace scanfilter::cli

@@ -1,0 +1,43 @@
+#pragma once
+// The filters of `scanfilter bench-accuracy`, each with the parameter grid
+// its tuning sweep draws from. The first value of every axis is the filter's
+// published default (ours: config/filter.yaml), so grid point 0 is the
+// filter as shipped. docs/baselines.md says where each default comes from.
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "scanfilter/filter_config.hpp"
+#include "scanfilter/scan_filter.hpp"
+
+namespace scanfilter::cli {
+
+struct SweepAxis {
+  std::string name;
+  std::vector<double> values;  // values[0]: the default
+};
+
+using ParamValues = std::map<std::string, double>;
+using FilterBuilder = std::function<std::unique_ptr<ScanFilter>(const ParamValues&, const SensorInfo&)>;
+
+struct FilterFamily {
+  std::string name;    // as the table and plots show it
+  std::string source;  // where the method and its defaults come from
+  std::vector<SweepAxis> axes;
+  FilterBuilder build;
+};
+
+// Our filter (from `ours`, usually config/filter.yaml) and the five baselines.
+std::vector<FilterFamily> comparisonFamilies(const FilterConfig& ours);
+
+// The grid points a sweep of `budget` evaluations tries: the default first,
+// then the rest of the grid in a fixed pseudo-random order (all of it when it
+// fits the budget). Same family and budget, same points.
+std::vector<ParamValues> sweepPoints(const FilterFamily& family, std::size_t budget);
+
+// "alpha=0.6 theta_k=70" (axes with one value left out).
+std::string describe(const FilterFamily& family, const ParamValues& values);
+
+}  // namespace scanfilter::cli
