@@ -62,6 +62,14 @@ struct BenchAccuracyOptions {
   int max_frames = 0;  // per simulated log, 0: whole trajectory
 };
 
+struct ReportRealOptions {
+  std::vector<std::string> logs;  // CARMEN, Mines URG-04LX or scan logs
+  std::string config;             // filter config (empty: built-in defaults)
+  std::string output_dir;         // real-recordings.md and map pictures; empty: stdout only
+  double carmen_range_max = 80.0;
+};
+
+int runReportReal(const ReportRealOptions& options);
 int runBenchAccuracy(const BenchAccuracyOptions& options);
 int runDiff(const DiffOptions& options);
 int runMap(const MapOptions& options);

@@ -78,6 +78,14 @@ int main(int argc, char** argv) {
   ben->add_option("--max-frames", bench.max_frames, "scans per simulated log (0: whole trajectory)")->check(CLI::NonNegativeNumber);
   ben->add_flag("!--no-robustness", bench.robustness, "skip the robustness variants (noise, resolution, drift)");
 
+  ReportRealOptions real;
+  auto* rr = app.add_subcommand("report-real",
+                                "Real recordings: points removed by reason, maps filtered vs unfiltered, pose-error effects");
+  rr->add_option("logs", real.logs, "CARMEN, Mines URG-04LX (.dat) or scan logs")->required()->check(CLI::ExistingFile);
+  rr->add_option("--config", real.config, "filter config YAML (default: built-in defaults)")->check(CLI::ExistingFile);
+  rr->add_option("-o,--output-dir", real.output_dir, "write real-recordings.md and the map pictures here");
+  rr->add_option("--carmen-range-max", real.carmen_range_max, "CARMEN logs: ranges at or above this are no return (m)")->capture_default_str();
+
   CLI11_PARSE(app, argc, argv);
   spdlog::set_level(spdlog::level::from_str(log_level));
   try {
@@ -88,6 +96,7 @@ int main(int argc, char** argv) {
     if (*dif) return runDiff(diff);
     if (*mp) return runMap(map);
     if (*ben) return runBenchAccuracy(bench);
+    if (*rr) return runReportReal(real);
   } catch (const scanfilter::InputError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;

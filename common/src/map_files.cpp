@@ -42,6 +42,17 @@ int pgmValue(const OccupancyGrid& grid, CellIndex c) {
 
 }  // namespace
 
+PngImage mapImage(const OccupancyGrid& grid, const CellBox& box) {
+  const int width = static_cast<int>(box.width()), height = static_cast<int>(box.height());
+  PngImage png(std::max(width, 1), std::max(height, 1));
+  for (int row = 0; row < height; ++row)
+    for (int col = 0; col < width; ++col) {
+      const auto v = static_cast<std::uint8_t>(pgmValue(grid, {box.lo.x + col, box.hi.y - row}));
+      png.set(col, row, {v, v, v});
+    }
+  return png;
+}
+
 void saveMap(const OccupancyGrid& grid, const std::string& base) {
   const CellBox box = grid.bounds();
   const auto width = static_cast<int>(box.width()), height = static_cast<int>(box.height());
@@ -63,13 +74,7 @@ void saveMap(const OccupancyGrid& grid, const std::string& base) {
         << "occupied_thresh: " << grid.params().occupied_threshold << "\n"
         << "free_thresh: " << grid.params().free_threshold << "\n";
   });
-  PngImage png(std::max(width, 1), std::max(height, 1), {205, 205, 205});
-  for (int row = 0; row < height; ++row)
-    for (int col = 0; col < width; ++col) {
-      const auto v = static_cast<std::uint8_t>(pgmValue(grid, {box.lo.x + col, box.hi.y - row}));
-      png.set(col, row, {v, v, v});
-    }
-  png.save(base + ".png.tmp");
+  mapImage(grid, box).save(base + ".png.tmp");
   std::filesystem::rename(base + ".png.tmp", base + ".png");
   writeAtomically(base + ".logodds", [&](std::ofstream& out) {
     out.write(kStateMagic, sizeof kStateMagic);

@@ -2,18 +2,21 @@
 
 #include "scanfilter/carmen_log_reader.hpp"
 #include "scanfilter/line_reader.hpp"
+#include "scanfilter/mines_log_reader.hpp"
 #include "scanfilter/scan_log_reader.hpp"
 
 namespace scanfilter {
 
 std::unique_ptr<ScanSource> openScanSource(const std::string& path, const ScanSourceOptions& options) {
-  // A scan log starts with a JSON object; anything else is read as CARMEN.
+  // A scan log starts with a JSON object, a Mines URG-04LX log with a line of
+  // 707 numbers; anything else is read as CARMEN.
   LineReader probe(path);
   std::string first;
   while (probe.next(first) && first.find_first_not_of(" \t") == std::string::npos) {
   }
   const auto start = first.find_first_not_of(" \t");
   if (start != std::string::npos && first[start] == '{') return std::make_unique<ScanLogReader>(path);
+  if (MinesLogReader::looksLikeMinesLine(first)) return std::make_unique<MinesLogReader>(path);
   return std::make_unique<CarmenLogReader>(path, options);
 }
 

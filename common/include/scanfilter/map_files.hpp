@@ -1,4 +1,5 @@
 #pragma once
+#include "scanfilter/png_image.hpp"
 #include <string>
 
 #include "scanfilter/occupancy_grid.hpp"
@@ -10,6 +11,10 @@ namespace scanfilter {
 // (the exact state, to continue from). Every file is written to a temporary
 // name and renamed, so a crash never leaves a torn file.
 void saveMap(const OccupancyGrid& grid, const std::string& base);
+
+// The map as people look at it (map_server grey levels) over `box`, which may
+// be larger than the grid's own bounds (to draw two maps on one frame).
+PngImage mapImage(const OccupancyGrid& grid, const CellBox& box);
 
 // Restores the exact state saved in BASE.logodds into `grid` (same params).
 void loadMapState(OccupancyGrid& grid, const std::string& base);
