@@ -102,18 +102,22 @@ void prChart(const std::string& path, const std::string& title, const std::vecto
   chart.draw().save(path);
 }
 
-// The window of kFigureFrames scans with the most artefacts in the truth.
+// The window of kFigureFrames scans showing most of both artefact kinds:
+// ranked by the rarer kind's count in the truth, then by the total.
 std::size_t busiestWindow(const sim::LabelledLog& log) {
-  std::vector<std::size_t> per_scan;
-  for (const auto& scan : log.scans)
-    per_scan.push_back(static_cast<std::size_t>(std::count_if(scan.truth.begin(), scan.truth.end(), [](std::uint8_t t) {
-      return t == static_cast<std::uint8_t>(PointCode::kJump) || t == static_cast<std::uint8_t>(PointCode::kMisdetected);
-    })));
-  std::size_t best = 0, best_sum = 0;
-  for (std::size_t i = 0; i + kFigureFrames <= per_scan.size(); ++i) {
-    std::size_t sum = 0;
-    for (int k = 0; k < kFigureFrames; ++k) sum += per_scan[i + static_cast<std::size_t>(k)];
-    if (sum > best_sum) best_sum = sum, best = i;
+  const auto count = [](const Scan& scan, PointCode c) {
+    return static_cast<std::size_t>(std::count(scan.truth.begin(), scan.truth.end(), static_cast<std::uint8_t>(c)));
+  };
+  std::size_t best = 0;
+  std::pair<std::size_t, std::size_t> best_rank{0, 0};
+  for (std::size_t i = 0; i + kFigureFrames <= log.scans.size(); ++i) {
+    std::size_t jump = 0, misdetected = 0;
+    for (std::size_t k = i; k < i + kFigureFrames; ++k) {
+      jump += count(log.scans[k], PointCode::kJump);
+      misdetected += count(log.scans[k], PointCode::kMisdetected);
+    }
+    const std::pair<std::size_t, std::size_t> rank{std::min(jump, misdetected), jump + misdetected};
+    if (rank > best_rank) best_rank = rank, best = i;
   }
   return best;
 }
@@ -131,8 +135,7 @@ void framesFigure(const std::string& path, const sim::LabelledLog& log, const st
     scoreFamily(*t.family, t.tuned, one, &labels);  // from the log's start: multi-frame filters need their history
     ScanRenderer renderer;
     for (std::size_t i = first; i < first + kFigureFrames; ++i) renderer.add(one[0].scans[i], log.sensor, labels[0][i]);
-    std::string title = t.family->name + " (tuned): " + log.name + " scans " + std::to_string(first) + "-" +
-                        std::to_string(first + kFigureFrames - 1);
+    std::string title = t.family->name + " (tuned)";
     std::transform(title.begin(), title.end(), title.begin(), [](unsigned char c) { return std::toupper(c); });
     rows.push_back(renderer.draw({.panel_pixels = kFigurePanelPixels, .title = title}));
     width = std::max(width, rows.back().width());
@@ -142,6 +145,7 @@ void framesFigure(const std::string& path, const sim::LabelledLog& log, const st
   int y = 0;
   for (const auto& row : rows) figure.paste(row, 0, y), y += row.height();
   figure.save(path);
+  std::cerr << "frames figure: " << log.name << " scans " << first << "-" << first + kFigureFrames - 1 << "\n";
 }
 
 void robustnessTables(std::ostream& out, const std::vector<TunedFamily>& tuned, const BenchAccuracyOptions& options) {

@@ -10,7 +10,7 @@ namespace scanfilter {
 
 namespace {
 constexpr int kPlotSize = 560;  // pixels of the unit square
-constexpr int kLeft = 90, kTop = 60, kRight = 420, kBottom = 80;
+constexpr int kLeft = 90, kTop = 80, kRight = 540, kBottom = 80;
 constexpr int kTextScale = 2;
 constexpr Rgb kAxis{60, 60, 60}, kGridLine{225, 225, 225}, kIsoF1{200, 200, 235}, kText{0, 0, 0};
 constexpr std::array<double, 3> kIsoF1Levels = {0.5, 0.7, 0.9};
@@ -43,7 +43,7 @@ PngImage PrecisionRecallChart::draw() const {
   PngImage image(kLeft + kPlotSize + kRight, kTop + kPlotSize + kBottom);
   const auto px = [](double recall) { return kLeft + static_cast<int>(std::lround(recall * kPlotSize)); };
   const auto py = [](double precision) { return kTop + kPlotSize - static_cast<int>(std::lround(precision * kPlotSize)); };
-  image.text(kLeft, kTop / 3, upper(title_), kText, kTextScale);
+  image.text(kLeft, 12, upper(title_), kText, kTextScale);
   char tick[16];
   for (double v = 0.0; v <= 1.0 + 1e-9; v += kTickStep) {
     image.line(px(v), py(0), px(v), py(1), kGridLine);
@@ -69,7 +69,7 @@ PngImage PrecisionRecallChart::draw() const {
   image.line(px(0), py(0), px(1), py(0), kAxis);
   image.line(px(0), py(0), px(0), py(1), kAxis);
   image.text(px(0.5) - 30, py(0) + 40, "RECALL", kText, kTextScale);
-  image.text(8, kTop - 30, "PRECISION", kText, kTextScale);
+  image.text(8, kTop - 28, "PRECISION", kText, kTextScale);
   // Markers, and a legend on the right (labels beside markers would overlap).
   int legend_y = kTop + 10;
   for (const auto& e : entries_) {
