@@ -19,7 +19,7 @@ trap 'rm -rf "$WORK"' EXIT
 "$BIN/bench/accuracy_table" > "$WORK/table.md"
 "$BIN/tools/scanfilter" bench-accuracy --config config/filter.yaml -o "$WORK/compare"
 "$BIN/tools/scanfilter" report-real --config config/filter.yaml \
-  "$REAL"/carmen/*.log.gz "$REAL"/mines_urg04lx/*.dat -o "$WORK/real"
+  "$REAL"/carmen/*.log.gz "$REAL"/mines_urg04lx/*.dat -o "$WORK/real" --image-prefix images/
 
 cp "$WORK"/compare/*.png "$WORK"/real/*.png docs/images/
 

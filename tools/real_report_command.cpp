@@ -158,8 +158,9 @@ int runReportReal(const ReportRealOptions& options) {
         picture = "real-map-" + std::filesystem::path(log.name).stem().stem().string() + ".png";
         saveSideBySide(unfiltered, filtered, log.name, (std::filesystem::path(options.output_dir) / picture).string());
       }
+      const std::string shown = picture == "-" ? picture : "![" + log.name + "](" + options.image_prefix + picture + ")";
       maps << "| " << log.name << " | " << occupiedCells(unfiltered) << " | " << occupiedCells(filtered) << " | "
-           << picture << " |\n";
+           << shown << " |\n";
     }
   }
   report << maps.str();
