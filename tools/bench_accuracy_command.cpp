@@ -212,9 +212,10 @@ int runBenchAccuracy(const BenchAccuracyOptions& options) {
          << " other logs, ranked by artefacts F1. Precision is class-agnostic: removed points of the class against "
             "valid points removed.\n\n";
   comparisonTable(report, tuned, as_default, as_tuned);
-  report << "\nTuning (evaluations, artefacts F1 on the tuning logs):";
-  for (const auto& t : tuned) report << " " << t.family->name << " " << t.evaluations << ", " << fmt("%.3f", t.tuned_objective) << ";";
-  report << "\n";
+  report << "\n| filter | source | evaluations | artefacts F1 on the tuning logs (tuned) |\n|---|---|---|---|\n";
+  for (const auto& t : tuned)
+    report << "| " << t.family->name << " | " << t.family->source << " | " << t.evaluations << " | "
+           << fmt("%.3f", t.tuned_objective) << " |\n";
   if (options.robustness) robustnessTables(report, tuned, options);
 
   if (!options.output_dir.empty()) {

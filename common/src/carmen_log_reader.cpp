@@ -24,13 +24,6 @@ constexpr std::size_t kFlaserTrailingFields = 9;
 constexpr std::size_t kRobotLaserTrailingFields = 13;
 constexpr std::size_t kRobotLaserHeadFields = 9;  // name .. num_readings
 
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> tokens;
-  std::istringstream in(line);
-  for (std::string token; in >> token;) tokens.push_back(std::move(token));
-  return tokens;
-}
-
 bool isScanLine(const std::string& line) {
   return line.rfind("FLASER ", 0) == 0 || line.rfind("ROBOTLASER1 ", 0) == 0;
 }
@@ -50,7 +43,7 @@ CarmenLogReader::CarmenLogReader(const std::string& path, const ScanSourceOption
       pending_line_ = lines_.lineNumber();
       break;
     }
-    const auto tokens = split(line);
+    const auto tokens = splitFields(line);
     if (tokens.size() < 3 || tokens[0] != "PARAM") continue;
     current_line_ = lines_.lineNumber();
     if (tokens[1] == "robot_frontlaser_offset")
@@ -62,7 +55,7 @@ CarmenLogReader::CarmenLogReader(const std::string& path, const ScanSourceOption
   // The angular accuracy defaults to the beam step of the first scan.
   current_line_ = pending_line_;
   Scan first;
-  const auto tokens = split(*pending_);
+  const auto tokens = splitFields(*pending_);
   if (tokens[0] == "FLASER") parseFlaser(tokens, first);
   else parseRobotLaser(tokens, first);
   header_.sensor.angular_accuracy_deg = std::abs(first.angle_increment) * 180.0 / std::numbers::pi;
@@ -160,7 +153,7 @@ bool CarmenLogReader::next(ScanRecord& record) {
   if (!readScanLine(line)) return false;
   record = ScanRecord{};
   record.line = current_line_;
-  const auto tokens = split(line);
+  const auto tokens = splitFields(line);
   if (tokens[0] == "FLASER") parseFlaser(tokens, record.scan);
   else parseRobotLaser(tokens, record.scan);
   if (record.scan.stamp < last_stamp_) {

@@ -21,13 +21,6 @@ constexpr double kMicros = 1e-6;
 constexpr double kMillimetres = 1e-3;
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> tokens;
-  std::istringstream in(line);
-  for (std::string token; in >> token;) tokens.push_back(std::move(token));
-  return tokens;
-}
-
 bool isInteger(const std::string& s) {
   long long v = 0;
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
@@ -37,7 +30,7 @@ bool isInteger(const std::string& s) {
 }  // namespace
 
 bool MinesLogReader::looksLikeMinesLine(const std::string& line) {
-  const auto tokens = split(line);
+  const auto tokens = splitFields(line);
   return tokens.size() == kFieldCount && isInteger(tokens[kTimeField]);
 }
 
@@ -83,7 +76,7 @@ bool MinesLogReader::next(ScanRecord& record) {
   std::vector<std::string> tokens;
   do {
     if (!lines_.next(line)) return false;
-    tokens = split(line);
+    tokens = splitFields(line);
   } while (tokens.empty());
   if (tokens.size() != kFieldCount)
     throw InputError(lines_.path(), lines_.lineNumber(), "fields",

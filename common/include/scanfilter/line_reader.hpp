@@ -1,6 +1,7 @@
 #pragma once
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace scanfilter {
 
@@ -23,5 +24,8 @@ class LineReader {
   void* file_ = nullptr;  // gzFile, kept opaque so zlib stays out of the header
   std::size_t line_number_ = 0;
 };
+
+// The whitespace-separated fields of a line (the text log formats).
+std::vector<std::string> splitFields(const std::string& line);
 
 }  // namespace scanfilter
