@@ -24,6 +24,9 @@ JumpFilterParams randomJumpParams(std::mt19937_64& rng) {
   p.d_min = 0.1;
   p.d_max = 8.0;
   p.span_range = u(rng) < 0.5 ? SpanRange::kClusterMean : SpanRange::kSeed;
+  p.off_surface_check = u(rng) < 0.5;
+  p.off_surface_min = 0.1 * u(rng);
+  p.off_surface_sigmas = 6.0 * u(rng);
   return p;
 }
 

@@ -132,6 +132,36 @@ TEST(JumpFilter, ClusterAcrossTheSeamIsOneCluster) {
   EXPECT_EQ(JumpClusterRule::spanInBeams(std::vector<std::uint32_t>{0, 120, 240}, 360, true), 240u);
 }
 
+// --- The off-surface check (beyond the paper) --------------------------------
+
+TEST(OffSurfaceCheck, CatchesAReturnDisplacedAlongItsBeamThatJoinedTheWallCluster) {
+  const SensorInfo sensor = test::simpleSensor();
+  Scan scan = castScan(World{}.wall({2, -3}, {2, 3}), {}, sensor);
+  const std::size_t i = test::beamTowards(scan, sensor, 10 * kDeg);
+  scan.ranges[i] -= 0.10;  // 10 cm in front of the wall: within eq. 5's radius of its neighbours
+  JumpFilterParams paper;
+  paper.off_surface_check = false;
+  EXPECT_EQ(countCode(label(scan, sensor, paper), PointCode::kJump), 0u) << "the cluster rule alone keeps it";
+  const auto labels = label(scan, sensor);
+  EXPECT_EQ(labels[i], static_cast<std::uint8_t>(PointCode::kJump));
+  EXPECT_EQ(countCode(labels, PointCode::kJump), 1u) << "its neighbours stay: each lies on its other side's line";
+}
+
+TEST(OffSurfaceCheck, KeepsCornersAndNoiseWithinTolerance) {
+  const SensorInfo sensor = test::simpleSensor();
+  Scan scan = castScan(World{}.wall({2, -3}, {2, 2}).wall({2, 2}, {-3, 2}), {}, sensor);
+  for (std::size_t i = 0; i < scan.size(); ++i)
+    if (scan.hasReturn(i)) scan.ranges[i] += (i % 2 ? 0.012 : -0.012);  // about 2σ at 2-3 m
+  const auto labels = label(scan, sensor);
+  EXPECT_EQ(countCode(labels, PointCode::kJump), 0u);
+}
+
+TEST(OffSurfaceCheck, DistanceFromTheLineThroughTwoPoints) {
+  EXPECT_DOUBLE_EQ(OffSurfaceCheck::offLine({1, 2}, {0, 0}, {5, 0}), 2.0);
+  EXPECT_DOUBLE_EQ(OffSurfaceCheck::offLine({-4, -3}, {0, 0}, {1, 0}), 3.0) << "the line, not the segment";
+  EXPECT_DOUBLE_EQ(OffSurfaceCheck::offLine({3, 4}, {0, 0}, {0, 0}), 5.0) << "coincident points: the distance";
+}
+
 TEST(JumpClusterRule, Equation5ScalesWithRange) {
   JumpFilterParams p;
   p.angular_accuracy_deg = 1.0;

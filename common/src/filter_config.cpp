@@ -22,11 +22,20 @@ void readJump(YamlSection& s, FilterConfig& config) {
   std::string span = p.span_range == SpanRange::kSeed ? "seed" : "cluster_mean";
   s.readChoice("span_range", span, {"cluster_mean", "seed"});
   p.span_range = span == "seed" ? SpanRange::kSeed : SpanRange::kClusterMean;
+  s.read("off_surface_check", p.off_surface_check);
+  s.read("off_surface_min", p.off_surface_min);
+  s.read("off_surface_sigmas", p.off_surface_sigmas);
+  s.read("noise_sigma_base", p.noise_sigma_base);
+  s.read("noise_sigma_quadratic", p.noise_sigma_quadratic);
   if (config.angular_accuracy_deg) s.requireRange("angular_accuracy_deg", *config.angular_accuracy_deg, 1e-6, 90.0, "0 < value <= 90");
   s.requireRange("alpha", p.alpha, 1e-9, 1e9, "a value > 0");
   s.requireRange("theta_k_deg", p.theta_k_deg, 0.0, 89.9, "0 <= value < 90 (cos θK must stay positive)");
   s.requireRange("l_min", p.l_min, 0.0, 1e9, "a value >= 0");
   s.requireRange("l_max", p.l_max, 0.0, 1e9, "a value >= 0");
+  s.requireRange("off_surface_min", p.off_surface_min, 0.0, 1e9, "a value >= 0 (m)");
+  s.requireRange("off_surface_sigmas", p.off_surface_sigmas, 0.0, 1e9, "a value >= 0");
+  s.requireRange("noise_sigma_base", p.noise_sigma_base, 0.0, 1e9, "a value >= 0 (m)");
+  s.requireRange("noise_sigma_quadratic", p.noise_sigma_quadratic, 0.0, 1e9, "a value >= 0 (m per m²)");
   if (config.d_min && config.d_max && !(*config.d_max > *config.d_min)) s.fail("d_max", "expected d_max > d_min");
   s.rejectUnknownKeys();
 }

@@ -18,6 +18,14 @@ struct JumpFilterParams {
   double d_min = 0.15;                // m, sensor's minimum range
   double d_max = 6.0;                 // m, sensor's maximum range
   SpanRange span_range = SpanRange::kClusterMean;
+  // Beyond the paper: a return that lies off both lines through its angular
+  // neighbours (i-2, i-1 and i+1, i+2) by more than the range noise allows is
+  // no surface point, whatever cluster it joined (off_surface_check.hpp).
+  bool off_surface_check = true;
+  double off_surface_min = 0.05;          // m, smallest offset that counts
+  double off_surface_sigmas = 4.0;        // offsets within this many σ(range) are noise
+  double noise_sigma_base = 0.003;        // m, the sensor's range noise σ at zero range
+  double noise_sigma_quadratic = 0.001;   // m per m²: σ(d) = base + quadratic·d² (triangulation)
 };
 
 }  // namespace scanfilter

@@ -1,0 +1,44 @@
+#pragma once
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "scanfilter/jump_filter_params.hpp"
+
+namespace scanfilter {
+
+// Beyond the paper, after the cluster rule of step 1: a jump point only a few
+// centimetres off a surface lies within the neighbour radius of eq. 5 and
+// joins that surface's cluster. Such a return lies off the line through its
+// two left neighbours *and* off the line through its two right neighbours.
+// A true surface point lies on at least one of them: inside a wall on both,
+// at a corner or a cluster's end on its own side's. Asking for both sides
+// keeps one displaced point from condemning its neighbours, and a corner
+// from condemning itself. A side only counts when its third neighbour lies
+// on the same line: in clutter (chairs, shelves at 1° resolution) two
+// neighbours do not make a surface, and extrapolating them condemns real
+// returns. A thin leg is off both lines (removed here as by the cluster rule,
+// restored by step 2's persistence rescue).
+class OffSurfaceCheck {
+ public:
+  explicit OffSurfaceCheck(const JumpFilterParams& params) : params_(params) {}
+
+  // Labels kJump every kValid point off both neighbour lines. `points` are in
+  // the sensor frame (NaN without a return); on a full turn the neighbours
+  // wrap across the seam.
+  void apply(std::span<const Eigen::Vector2d> points, std::span<const double> ranges, bool full_turn,
+             std::span<std::uint8_t> labels);
+
+  // Distance of p from the line through a and b.
+  static double offLine(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
+
+ private:
+  double tolerance(double range) const;
+
+  JumpFilterParams params_;
+  std::vector<std::uint32_t> marked_;
+};
+
+}  // namespace scanfilter
