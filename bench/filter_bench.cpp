@@ -14,6 +14,7 @@
 #include <benchmark/benchmark.h>
 
 #include "scanfilter/jump_filter.hpp"
+#include "scanfilter/off_surface_check.hpp"
 #include "scanfilter/penetration_filter.hpp"
 #include "scanfilter/point_code.hpp"
 #include "scanfilter/sim/scan_simulator.hpp"
@@ -102,14 +103,36 @@ ExploredState& explored(Implementation impl, int area_m2, int beams) {
   return state;
 }
 
+// The paper's clustering (eq. 5-7): the off-surface check is off here, it is
+// the same O(N) pass in both implementations and has its own benchmark.
 void BM_JumpFilter(benchmark::State& state, Implementation impl) {
   const int beams = static_cast<int>(state.range(0));
   const sim::Scene hall = sim::findScene("hall");
   const Scan scan = simulatedFrame(hall, beams, 200);
-  auto filter = makeJumpFilter(JumpFilterParams{}, impl);
+  JumpFilterParams params;
+  params.off_surface_check = false;
+  auto filter = makeJumpFilter(params, impl);
   std::vector<std::uint8_t> labels(scan.size());
   for (auto _ : state) {
     filter->apply(scan, hall.sensor, labels);
+    benchmark::DoNotOptimize(labels.data());
+  }
+  state.counters["beams"] = beams;
+}
+
+// The off-surface check alone, on the same frame (every point valid to start).
+void BM_OffSurfaceCheck(benchmark::State& state) {
+  const int beams = static_cast<int>(state.range(0));
+  const sim::Scene hall = sim::findScene("hall");
+  const Scan scan = simulatedFrame(hall, beams, 200);
+  BeamDirectionTable directions;
+  std::vector<Eigen::Vector2d> points;
+  sensorFramePoints(scan, hall.sensor, directions, points);
+  OffSurfaceCheck check{JumpFilterParams{}};
+  std::vector<std::uint8_t> labels(scan.size());
+  for (auto _ : state) {
+    std::fill(labels.begin(), labels.end(), static_cast<std::uint8_t>(PointCode::kValid));
+    check.apply(points, scan.ranges, isFullTurn(scan), labels);
     benchmark::DoNotOptimize(labels.data());
   }
   state.counters["beams"] = beams;
@@ -134,6 +157,7 @@ void BM_PenetrationJudge(benchmark::State& state, Implementation impl) {
 
 BENCHMARK_CAPTURE(BM_JumpFilter, reference, Implementation::kReference)->Arg(360)->Arg(1080)->Arg(3600)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_JumpFilter, fast, Implementation::kFast)->Arg(360)->Arg(1080)->Arg(3600)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_OffSurfaceCheck)->Arg(360)->Arg(1080)->Arg(3600)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_PenetrationJudge, reference, Implementation::kReference)
     ->ArgsProduct({{360, 1080, 3600}, {100, 1000}})->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_PenetrationJudge, fast, Implementation::kFast)

@@ -14,6 +14,16 @@ double OffSurfaceCheck::offLine(const Eigen::Vector2d& p, const Eigen::Vector2d&
   return std::abs(d.x() * (p.y() - a.y()) - d.y() * (p.x() - a.x())) / length;
 }
 
+bool OffSurfaceCheck::isOffLine(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                                double tol) {
+  // offLine(p, a, b) > tol without the square root (the same decision).
+  const Eigen::Vector2d d = b - a;
+  const double length_sq = d.squaredNorm();
+  if (length_sq == 0.0) return (p - a).squaredNorm() > tol * tol;
+  const double cross = d.x() * (p.y() - a.y()) - d.y() * (p.x() - a.x());
+  return cross * cross > tol * tol * length_sq;
+}
+
 double OffSurfaceCheck::tolerance(double range) const {
   const double sigma = params_.noise_sigma_base + params_.noise_sigma_quadratic * range * range;
   return std::max(params_.off_surface_min, params_.off_surface_sigmas * sigma);
@@ -36,8 +46,8 @@ void OffSurfaceCheck::apply(std::span<const Eigen::Vector2d> points, std::span<c
     const Eigen::Vector2d* mid = at(i + 2 * step);
     const Eigen::Vector2d* far = at(i + 3 * step);
     if (!near || !mid || !far) return false;  // no line on this side: nothing to judge by
-    if (offLine(*far, *mid, *near) > tol) return false;
-    return offLine(points[static_cast<std::size_t>(i)], *mid, *near) > tol;
+    // Most returns lie on the line: test p first, the straightness only then.
+    return isOffLine(points[static_cast<std::size_t>(i)], *mid, *near, tol) && !isOffLine(*far, *mid, *near, tol);
   };
   marked_.clear();
   for (std::int64_t i = 0; i < n; ++i) {

@@ -33,6 +33,8 @@ class OffSurfaceCheck {
 
   // Distance of p from the line through a and b.
   static double offLine(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
+  // offLine(p, a, b) > tol, without a square root (the hot path).
+  static bool isOffLine(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b, double tol);
 
  private:
   double tolerance(double range) const;
