@@ -33,7 +33,7 @@ void OffSurfaceCheck::apply(std::span<const Eigen::Vector2d> points, std::span<c
                             std::span<std::uint8_t> labels) {
   const auto n = static_cast<std::int64_t>(points.size());
   const auto at = [&](std::int64_t k) -> const Eigen::Vector2d* {
-    if (full_turn) k = (k % n + n) % n;
+    if (full_turn) k += k < 0 ? n : (k >= n ? -n : 0);  // offsets are a few beams, never a whole turn
     if (k < 0 || k >= n || ranges[static_cast<std::size_t>(k)] != ranges[static_cast<std::size_t>(k)]) return nullptr;
     return &points[static_cast<std::size_t>(k)];
   };
