@@ -83,6 +83,8 @@ TEST(Agreement, TwoStepFilterOnSimulatedScenes) {
       p.penetration.obstacle_threshold = variant;
       p.penetration.frame_lifetime = 0.5 + 3 * u(rng);
       p.penetration.rescue_persistent_points = variant != 1;
+      p.penetration.grazing_margin = variant != 2;
+      p.penetration.grazing_margin_max = 2.0 * u(rng);
       sim::ScanSimulator simulator(sim::findScene(name), 100 + static_cast<std::uint64_t>(variant));
       const SensorInfo& sensor = simulator.header().sensor;
       TwoStepFilter reference(p, Implementation::kReference);

@@ -54,6 +54,8 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.read("surface_gap", p.surface_gap);
   s.read("own_surface_margin", p.own_surface_margin);
   s.read("own_surface_margin_per_m", p.own_surface_margin_per_m);
+  s.read("grazing_margin", p.grazing_margin);
+  s.read("grazing_margin_max", p.grazing_margin_max);
   s.read("behind_margin", p.behind_margin);
   s.read("pose_jump_reset", p.pose_jump_reset);
   s.read("max_cache_frames", p.max_cache_frames);
@@ -68,6 +70,7 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.requireRange("corridor_half_width", p.corridor_half_width, 0.0, 1e9, "a value >= 0 (m)");
   s.requireRange("own_surface_margin", p.own_surface_margin, 0.0, 1e9, "a value >= 0 (m)");
   s.requireRange("own_surface_margin_per_m", p.own_surface_margin_per_m, 0.0, 1e9, "a value >= 0");
+  s.requireRange("grazing_margin_max", p.grazing_margin_max, 0.0, 1e9, "a value >= 0 (m)");
   s.requireRange("straddle_half_width", p.straddle_half_width, 0.0, 1e9, "a value >= 0 (m)");
   s.requireRange("surface_gap", p.surface_gap, 0.0, 1e9, "a value >= 0 (m)");
   s.requireRange("behind_margin", p.behind_margin, 0.0, 1e9, "a value >= 0 (m)");

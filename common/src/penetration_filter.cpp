@@ -89,9 +89,32 @@ void PenetrationFilter::judge(const Scan& scan, const SensorInfo& sensor,
   prepareJudging(origin);
   for (std::size_t i = 0; i < labels.size(); ++i) {
     if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid)) continue;
-    if (isMisdetected(origin, points_[i]))
+    if (isMisdetected(origin, points_[i], ownMarginSq(origin, i)))
       labels[i] = static_cast<std::uint8_t>(PointCode::kMisdetected);
   }
+}
+
+double PenetrationFilter::ownMarginSq(const Eigen::Vector2d& origin, std::size_t i) const {
+  const Eigen::Vector2d& p = points_[i];
+  const double length = (p - origin).norm();
+  double margin = rule_.ownMargin(length);
+  if (!params_.grazing_margin || i == 0 || i + 1 >= points_.size()) return margin * margin;
+  const Eigen::Vector2d& a = points_[i - 1];
+  const Eigen::Vector2d& b = points_[i + 1];
+  if (std::isnan(a.x()) || std::isnan(b.x())) return margin * margin;
+  const Eigen::Vector2d surface = b - a;
+  const double surface_length = surface.norm();
+  if (surface_length <= 0.0 || length <= 0.0) return margin * margin;
+  // One surface only when p lies on the line through its neighbours.
+  const double off_line = std::abs(surface.x() * (p.y() - a.y()) - surface.y() * (p.x() - a.x())) / surface_length;
+  if (off_line > params_.straddle_half_width) return margin * margin;
+  const Eigen::Vector2d beam = (p - origin) / length;
+  const double sin_grazing = std::abs(beam.x() * surface.y() - beam.y() * surface.x()) / surface_length;
+  const double cos_grazing = std::abs(beam.dot(surface)) / surface_length;
+  const double run_along_surface = sin_grazing > 0.0 ? params_.straddle_half_width * cos_grazing / sin_grazing
+                                                     : params_.grazing_margin_max;
+  margin = std::max(margin, std::min(run_along_surface, params_.grazing_margin_max));
+  return margin * margin;
 }
 
 int PenetrationFilter::evidenceAround(const Eigen::Vector2d& p) const {
@@ -127,9 +150,8 @@ void ReferencePenetrationFilter::prepareJudging(const Eigen::Vector2d& /*origin*
                          [this](CellIndex c, int) { obstacles_.push_back(obstaclePosition(c)); });
 }
 
-bool ReferencePenetrationFilter::isMisdetected(const Eigen::Vector2d& r,
-                                               const Eigen::Vector2d& p) {
-  const double own_sq = rule_.ownMarginSq((p - r).norm());
+bool ReferencePenetrationFilter::isMisdetected(const Eigen::Vector2d& r, const Eigen::Vector2d& p,
+                                               double own_sq) {
   evidence_along_beam_.reset();
   for (const auto& q : obstacles_)  // steps a-f: every obstacle cell in turn
     if (evidence_along_beam_.add(rule_.evidence(r, p, q, own_sq), q)) return true;
@@ -152,11 +174,10 @@ void FastPenetrationFilter::prepareJudging(const Eigen::Vector2d& origin) {
                 grid_.cellOf(hi.array() + reach));
 }
 
-bool FastPenetrationFilter::isMisdetected(const Eigen::Vector2d& r, const Eigen::Vector2d& p) {
+bool FastPenetrationFilter::isMisdetected(const Eigen::Vector2d& r, const Eigen::Vector2d& p, double own_sq) {
   const Eigen::Vector2d v = p - r;
   const double length = v.norm();
   if (length <= 0.0) return false;
-  const double own_sq = rule_.ownMarginSq(length);
   // Penetrating cells project onto the beam between r and p + behind margin.
   const Eigen::Vector2d end = r + v * ((length + rule_.behindMargin()) / length);
   evidence_along_beam_.reset();

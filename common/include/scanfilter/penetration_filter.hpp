@@ -53,8 +53,12 @@ class PenetrationFilter {
   // Called once per judged frame, before the first isMisdetected(); points_
   // then holds the frame's world points.
   virtual void prepareJudging(const Eigen::Vector2d& /*origin*/) {}
-  // True when the beam from sensor r to p passes through an obstacle cell.
-  virtual bool isMisdetected(const Eigen::Vector2d& r, const Eigen::Vector2d& p) = 0;
+  // True when the beam from sensor r to p passes through an obstacle cell;
+  // cells within sqrt(own_sq) of p are p's own surface.
+  virtual bool isMisdetected(const Eigen::Vector2d& r, const Eigen::Vector2d& p, double own_sq) = 0;
+  // Squared own-surface margin of point i seen from `origin`: the configured
+  // margin, grown for a beam grazing its surface (grazing_margin).
+  double ownMarginSq(const Eigen::Vector2d& origin, std::size_t i) const;
 
   // The position q of an obstacle cell used by the rule: centre or centroid.
   Eigen::Vector2d obstaclePosition(CellIndex c) const {
@@ -96,7 +100,7 @@ class ReferencePenetrationFilter final : public PenetrationFilter {
 
  private:
   void prepareJudging(const Eigen::Vector2d& origin) override;
-  bool isMisdetected(const Eigen::Vector2d& r, const Eigen::Vector2d& p) override;
+  bool isMisdetected(const Eigen::Vector2d& r, const Eigen::Vector2d& p, double own_sq) override;
   std::vector<Eigen::Vector2d> obstacles_;
 };
 
@@ -109,7 +113,7 @@ class FastPenetrationFilter final : public PenetrationFilter {
 
  private:
   void prepareJudging(const Eigen::Vector2d& origin) override;
-  bool isMisdetected(const Eigen::Vector2d& r, const Eigen::Vector2d& p) override;
+  bool isMisdetected(const Eigen::Vector2d& r, const Eigen::Vector2d& p, double own_sq) override;
   ObstacleWindow window_;
 };
 

@@ -26,6 +26,14 @@ struct PenetrationFilterParams {
   double surface_gap = 0.12;          // m
   double own_surface_margin = 0.15;    // m, cells nearer the point are its own surface
   double own_surface_margin_per_m = 0.02;  // m per m of range added to that margin
+  // Beyond the paper: a beam meeting its surface at a grazing angle g runs
+  // within straddle_half_width of that surface for straddle_half_width / tan g
+  // before it ends, so the cells it passes there are its own surface, not a
+  // wall it penetrates. The own-surface margin grows to that length (at most
+  // grazing_margin_max), the surface's direction taken from the neighbouring
+  // returns when they lie on one line with the point.
+  bool grazing_margin = true;
+  double grazing_margin_max = 1.0;  // m
   double behind_margin = 0.0;       // m, step (e) read literally: cells this near beyond p mark it
   double pose_jump_reset = 0.5;     // m, a larger sensor jump between frames resets the cache
   std::size_t max_cache_frames = 200;  // bound on cached frames whatever T_max says

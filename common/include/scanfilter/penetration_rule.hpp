@@ -25,9 +25,10 @@ class PenetrationRule {
         behind_sq_(params.behind_margin * params.behind_margin),
         require_both_sides_(params.require_both_sides) {}
 
-  // Squared own-surface margin for a beam of length `length` (m).
+  // Own-surface margin for a beam of length `length` (m), and its square.
+  double ownMargin(double length) const { return own_margin_ + own_margin_per_m_ * length; }
   double ownMarginSq(double length) const {
-    const double m = own_margin_ + own_margin_per_m_ * length;
+    const double m = ownMargin(length);
     return m * m;
   }
 
