@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <spdlog/spdlog.h>
 
@@ -95,26 +96,30 @@ void PenetrationFilter::judge(const Scan& scan, const SensorInfo& sensor,
 }
 
 double PenetrationFilter::ownMarginSq(const Eigen::Vector2d& origin, std::size_t i) const {
+  double margin = rule_.ownMargin((points_[i] - origin).norm());
+  if (params_.grazing_margin)
+    margin = std::max(margin, std::min(grazingRun(origin, i), params_.grazing_margin_max));
+  return margin * margin;
+}
+
+double PenetrationFilter::grazingRun(const Eigen::Vector2d& origin, std::size_t i) const {
+  if (i == 0 || i + 1 >= points_.size()) return 0.0;
   const Eigen::Vector2d& p = points_[i];
-  const double length = (p - origin).norm();
-  double margin = rule_.ownMargin(length);
-  if (!params_.grazing_margin || i == 0 || i + 1 >= points_.size()) return margin * margin;
   const Eigen::Vector2d& a = points_[i - 1];
   const Eigen::Vector2d& b = points_[i + 1];
-  if (std::isnan(a.x()) || std::isnan(b.x())) return margin * margin;
+  if (std::isnan(a.x()) || std::isnan(b.x())) return 0.0;
   const Eigen::Vector2d surface = b - a;
   const double surface_length = surface.norm();
-  if (surface_length <= 0.0 || length <= 0.0) return margin * margin;
+  const double length = (p - origin).norm();
+  if (surface_length <= 0.0 || length <= 0.0) return 0.0;
   // One surface only when p lies on the line through its neighbours.
   const double off_line = std::abs(surface.x() * (p.y() - a.y()) - surface.y() * (p.x() - a.x())) / surface_length;
-  if (off_line > params_.straddle_half_width) return margin * margin;
+  if (off_line > params_.straddle_half_width) return 0.0;
   const Eigen::Vector2d beam = (p - origin) / length;
   const double sin_grazing = std::abs(beam.x() * surface.y() - beam.y() * surface.x()) / surface_length;
   const double cos_grazing = std::abs(beam.dot(surface)) / surface_length;
-  const double run_along_surface = sin_grazing > 0.0 ? params_.straddle_half_width * cos_grazing / sin_grazing
-                                                     : params_.grazing_margin_max;
-  margin = std::max(margin, std::min(run_along_surface, params_.grazing_margin_max));
-  return margin * margin;
+  if (sin_grazing <= 0.0) return std::numeric_limits<double>::infinity();  // the beam runs along it
+  return params_.straddle_half_width * cos_grazing / sin_grazing;
 }
 
 int PenetrationFilter::evidenceAround(const Eigen::Vector2d& p) const {

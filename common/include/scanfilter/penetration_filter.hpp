@@ -59,6 +59,9 @@ class PenetrationFilter {
   // Squared own-surface margin of point i seen from `origin`: the configured
   // margin, grown for a beam grazing its surface (grazing_margin).
   double ownMarginSq(const Eigen::Vector2d& origin, std::size_t i) const;
+  // How far back from point i its beam stays within straddle_half_width of
+  // the surface through i's neighbours (0 when they do not make one line).
+  double grazingRun(const Eigen::Vector2d& origin, std::size_t i) const;
 
   // The position q of an obstacle cell used by the rule: centre or centroid.
   Eigen::Vector2d obstaclePosition(CellIndex c) const {
