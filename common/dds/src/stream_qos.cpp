@@ -9,7 +9,6 @@ using namespace eprosima::fastdds::dds;
 namespace {
 constexpr int kRosDefaultDepth = 10;
 constexpr double kHeartbeatPeriodS = 0.01;
-
 }  // namespace
 
 eprosima::fastrtps::Duration_t toDuration(double seconds) {
@@ -17,16 +16,36 @@ eprosima::fastrtps::Duration_t toDuration(double seconds) {
   return {whole, static_cast<uint32_t>((seconds - whole) * 1e9)};
 }
 
-DataWriterQos losslessWriterQos(const StreamQos& q) {
-  DataWriterQos qos = DATAWRITER_QOS_DEFAULT;
+namespace {
+
+// Reliable keep-all with room for twice the flow-control window
+// (flowControlWindow), so the history never fills; volatile.
+template <class Qos>
+Qos keepAll(Qos qos, const StreamQos& q) {
   qos.reliability().kind = RELIABLE_RELIABILITY_QOS;
-  qos.reliability().max_blocking_time = toDuration(q.max_blocking_s);
   qos.history().kind = KEEP_ALL_HISTORY_QOS;
-  // Twice the flow-control window (flowControlWindow): the history never fills.
   qos.resource_limits().max_samples = 2 * q.queue_depth;
   qos.resource_limits().max_instances = 1;
   qos.resource_limits().max_samples_per_instance = 2 * q.queue_depth;
   qos.durability().kind = VOLATILE_DURABILITY_QOS;
+  return qos;
+}
+
+// Keep last `depth`, volatile, with the given reliability.
+template <class Qos>
+Qos keepLast(Qos qos, ReliabilityQosPolicyKind reliability, int depth) {
+  qos.reliability().kind = reliability;
+  qos.history().kind = KEEP_LAST_HISTORY_QOS;
+  qos.history().depth = depth;
+  qos.durability().kind = VOLATILE_DURABILITY_QOS;
+  return qos;
+}
+
+}  // namespace
+
+DataWriterQos losslessWriterQos(const StreamQos& q) {
+  DataWriterQos qos = keepAll(DATAWRITER_QOS_DEFAULT, q);
+  qos.reliability().max_blocking_time = toDuration(q.max_blocking_s);
   // Acknowledgements come back after a heartbeat; Fast DDS's default period
   // of 3 s would make every flow-control wait last seconds.
   qos.reliable_writer_qos().times.heartbeatPeriod = toDuration(kHeartbeatPeriodS);
@@ -35,51 +54,25 @@ DataWriterQos losslessWriterQos(const StreamQos& q) {
 }
 
 DataReaderQos losslessReaderQos(const StreamQos& q) {
-  DataReaderQos qos = DATAREADER_QOS_DEFAULT;
-  qos.reliability().kind = RELIABLE_RELIABILITY_QOS;
-  qos.history().kind = KEEP_ALL_HISTORY_QOS;
-  qos.resource_limits().max_samples = 2 * q.queue_depth;
-  qos.resource_limits().max_instances = 1;
-  qos.resource_limits().max_samples_per_instance = 2 * q.queue_depth;
+  DataReaderQos qos = keepAll(DATAREADER_QOS_DEFAULT, q);
   qos.reliable_reader_qos().times.heartbeatResponseDelay = toDuration(0.0);
-  qos.durability().kind = VOLATILE_DURABILITY_QOS;
   return qos;
 }
 
 DataWriterQos rosDefaultWriterQos() {
-  DataWriterQos qos = DATAWRITER_QOS_DEFAULT;
-  qos.reliability().kind = RELIABLE_RELIABILITY_QOS;
-  qos.history().kind = KEEP_LAST_HISTORY_QOS;
-  qos.history().depth = kRosDefaultDepth;
-  qos.durability().kind = VOLATILE_DURABILITY_QOS;
-  return qos;
+  return keepLast(DATAWRITER_QOS_DEFAULT, RELIABLE_RELIABILITY_QOS, kRosDefaultDepth);
 }
 
 DataReaderQos rosDefaultReaderQos() {
-  DataReaderQos qos = DATAREADER_QOS_DEFAULT;
-  qos.reliability().kind = RELIABLE_RELIABILITY_QOS;
-  qos.history().kind = KEEP_LAST_HISTORY_QOS;
-  qos.history().depth = kRosDefaultDepth;
-  qos.durability().kind = VOLATILE_DURABILITY_QOS;
-  return qos;
+  return keepLast(DATAREADER_QOS_DEFAULT, RELIABLE_RELIABILITY_QOS, kRosDefaultDepth);
 }
 
 DataReaderQos sensorDataReaderQos(int depth) {
-  DataReaderQos qos = DATAREADER_QOS_DEFAULT;
-  qos.reliability().kind = BEST_EFFORT_RELIABILITY_QOS;
-  qos.history().kind = KEEP_LAST_HISTORY_QOS;
-  qos.history().depth = depth;
-  qos.durability().kind = VOLATILE_DURABILITY_QOS;
-  return qos;
+  return keepLast(DATAREADER_QOS_DEFAULT, BEST_EFFORT_RELIABILITY_QOS, depth);
 }
 
 DataWriterQos sensorDataWriterQos(int depth) {
-  DataWriterQos qos = DATAWRITER_QOS_DEFAULT;
-  qos.reliability().kind = BEST_EFFORT_RELIABILITY_QOS;
-  qos.history().kind = KEEP_LAST_HISTORY_QOS;
-  qos.history().depth = depth;
-  qos.durability().kind = VOLATILE_DURABILITY_QOS;
-  return qos;
+  return keepLast(DATAWRITER_QOS_DEFAULT, BEST_EFFORT_RELIABILITY_QOS, depth);
 }
 
 }  // namespace scanfilter::dds_io
