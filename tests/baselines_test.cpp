@@ -219,8 +219,12 @@ TEST(OpticsFilter, ExtractionAgreesWithDbscanOnCorePointsAndNoise) {
       bool near_core = false;
       for (std::size_t j = 0; j < pts.size(); ++j)
         near_core |= (pts[j] - pts[i]).norm() <= p.eps_cluster && neighbours(j) >= p.min_pts;
-      if (core) EXPECT_EQ(labels[i], kValid) << "trial " << trial << " beam " << i;
-      if (!near_core) EXPECT_NE(labels[i], kValid) << "trial " << trial << " beam " << i;
+      if (core) {
+        EXPECT_EQ(labels[i], kValid) << "trial " << trial << " beam " << i;
+      }
+      if (!near_core) {
+        EXPECT_NE(labels[i], kValid) << "trial " << trial << " beam " << i;
+      }
     }
   }
 }

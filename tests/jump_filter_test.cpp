@@ -157,9 +157,9 @@ TEST(OffSurfaceCheck, KeepsCornersAndNoiseWithinTolerance) {
 }
 
 TEST(OffSurfaceCheck, DistanceFromTheLineThroughTwoPoints) {
-  EXPECT_DOUBLE_EQ(OffSurfaceCheck::offLine({1, 2}, {0, 0}, {5, 0}), 2.0);
-  EXPECT_DOUBLE_EQ(OffSurfaceCheck::offLine({-4, -3}, {0, 0}, {1, 0}), 3.0) << "the line, not the segment";
-  EXPECT_DOUBLE_EQ(OffSurfaceCheck::offLine({3, 4}, {0, 0}, {0, 0}), 5.0) << "coincident points: the distance";
+  EXPECT_DOUBLE_EQ(distanceToLine({1, 2}, {0, 0}, {5, 0}), 2.0);
+  EXPECT_DOUBLE_EQ(distanceToLine({-4, -3}, {0, 0}, {1, 0}), 3.0) << "the line, not the segment";
+  EXPECT_DOUBLE_EQ(distanceToLine({3, 4}, {0, 0}, {0, 0}), 5.0) << "coincident points: the distance";
   EXPECT_TRUE(OffSurfaceCheck::isOffLine({1, 2}, {0, 0}, {5, 0}, 1.99));
   EXPECT_FALSE(OffSurfaceCheck::isOffLine({1, 2}, {0, 0}, {5, 0}, 2.01));
   EXPECT_TRUE(OffSurfaceCheck::isOffLine({3, 4}, {0, 0}, {0, 0}, 4.99));

@@ -28,7 +28,7 @@ void JumpFilter::apply(const Scan& scan, const SensorInfo& sensor, std::span<std
       for (std::uint32_t m : cluster_) labels[m] = static_cast<std::uint8_t>(PointCode::kJump);
     }
   }
-  if (params_.off_surface_check) off_surface_.apply(points_, scan.ranges, full_turn_, labels);
+  off_surface_.apply(points_, scan.ranges, full_turn_, labels);
 }
 
 // --- Reference: the paper's steps 2-5 literally -----------------------------

@@ -7,16 +7,9 @@
 
 namespace scanfilter {
 
-double OffSurfaceCheck::offLine(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  const Eigen::Vector2d d = b - a;
-  const double length = d.norm();
-  if (length == 0.0) return (p - a).norm();
-  return std::abs(d.x() * (p.y() - a.y()) - d.y() * (p.x() - a.x())) / length;
-}
-
 bool OffSurfaceCheck::isOffLine(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                                 double tol) {
-  // offLine(p, a, b) > tol without the square root (the same decision).
+  // distanceToLine(p, a, b) > tol without the square root (the same decision).
   const Eigen::Vector2d d = b - a;
   const double length_sq = d.squaredNorm();
   if (length_sq == 0.0) return (p - a).squaredNorm() > tol * tol;
@@ -31,6 +24,7 @@ double OffSurfaceCheck::tolerance(double range) const {
 
 void OffSurfaceCheck::apply(std::span<const Eigen::Vector2d> points, std::span<const double> ranges, bool full_turn,
                             std::span<std::uint8_t> labels) {
+  if (!params_.off_surface_check) return;
   const auto n = static_cast<std::int64_t>(points.size());
   const auto at = [&](std::int64_t k) -> const Eigen::Vector2d* {
     if (full_turn) k += k < 0 ? n : (k >= n ? -n : 0);  // offsets are a few beams, never a whole turn

@@ -109,17 +109,15 @@ double PenetrationFilter::grazingRun(const Eigen::Vector2d& origin, std::size_t 
   const Eigen::Vector2d& b = points_[i + 1];
   if (std::isnan(a.x()) || std::isnan(b.x())) return 0.0;
   const Eigen::Vector2d surface = b - a;
-  const double surface_length = surface.norm();
-  const double length = (p - origin).norm();
-  if (surface_length <= 0.0 || length <= 0.0) return 0.0;
+  const Eigen::Vector2d beam = p - origin;
+  if (surface.squaredNorm() == 0.0 || beam.squaredNorm() == 0.0) return 0.0;
   // One surface only when p lies on the line through its neighbours.
-  const double off_line = std::abs(surface.x() * (p.y() - a.y()) - surface.y() * (p.x() - a.x())) / surface_length;
-  if (off_line > params_.straddle_half_width) return 0.0;
-  const Eigen::Vector2d beam = (p - origin) / length;
-  const double sin_grazing = std::abs(beam.x() * surface.y() - beam.y() * surface.x()) / surface_length;
-  const double cos_grazing = std::abs(beam.dot(surface)) / surface_length;
-  if (sin_grazing <= 0.0) return std::numeric_limits<double>::infinity();  // the beam runs along it
-  return params_.straddle_half_width * cos_grazing / sin_grazing;
+  if (distanceToLine(p, a, b) > params_.straddle_half_width) return 0.0;
+  // straddle / tan(grazing angle): |beam · surface| / |beam × surface|.
+  const double across = std::abs(beam.x() * surface.y() - beam.y() * surface.x());
+  const double along = std::abs(beam.dot(surface));
+  if (across == 0.0) return std::numeric_limits<double>::infinity();  // the beam runs along it
+  return params_.straddle_half_width * along / across;
 }
 
 int PenetrationFilter::evidenceAround(const Eigen::Vector2d& p) const {

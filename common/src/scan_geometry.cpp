@@ -82,4 +82,11 @@ bool isFullTurn(const Scan& scan) {
   return covered >= 2.0 * std::numbers::pi - 0.5 * std::abs(scan.angle_increment);
 }
 
+double distanceToLine(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const Eigen::Vector2d d = b - a;
+  const double length = d.norm();
+  if (length == 0.0) return (p - a).norm();
+  return std::abs(d.x() * (p.y() - a.y()) - d.y() * (p.x() - a.x())) / length;
+}
+
 }  // namespace scanfilter

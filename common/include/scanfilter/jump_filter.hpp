@@ -19,7 +19,7 @@ namespace scanfilter {
 // Writes one code per beam: no return, jump, or valid.
 class JumpFilter {
  public:
-  explicit JumpFilter(const JumpFilterParams& params) : rule_(params), off_surface_(params), params_(params) {}
+  explicit JumpFilter(const JumpFilterParams& params) : rule_(params), off_surface_(params) {}
   virtual ~JumpFilter() = default;
 
   void apply(const Scan& scan, const SensorInfo& sensor, std::span<std::uint8_t> labels);
@@ -36,7 +36,6 @@ class JumpFilter {
 
   JumpClusterRule rule_;
   OffSurfaceCheck off_surface_;
-  JumpFilterParams params_;
   BeamDirectionTable directions_;
   std::vector<Eigen::Vector2d> points_;  // sensor frame
   std::vector<std::uint8_t> free_;       // 1 while a point belongs to no cluster

@@ -19,8 +19,9 @@ struct JumpFilterParams {
   double d_max = 6.0;                 // m, sensor's maximum range
   SpanRange span_range = SpanRange::kClusterMean;
   // Beyond the paper: a return that lies off both lines through its angular
-  // neighbours (i-2, i-1 and i+1, i+2) by more than the range noise allows is
-  // no surface point, whatever cluster it joined (off_surface_check.hpp).
+  // neighbours on either side (each a straight run of three returns) by more
+  // than the range noise allows is no surface point, whatever cluster it
+  // joined (off_surface_check.hpp).
   bool off_surface_check = true;
   double off_surface_min = 0.05;          // m, smallest offset that counts
   double off_surface_sigmas = 4.0;        // offsets within this many σ(range) are noise

@@ -25,15 +25,14 @@ class OffSurfaceCheck {
  public:
   explicit OffSurfaceCheck(const JumpFilterParams& params) : params_(params) {}
 
-  // Labels kJump every kValid point off both neighbour lines. `points` are in
+  // Labels kJump every kValid point off both neighbour lines (nothing when
+  // off_surface_check is false). `points` are in
   // the sensor frame (NaN without a return); on a full turn the neighbours
   // wrap across the seam.
   void apply(std::span<const Eigen::Vector2d> points, std::span<const double> ranges, bool full_turn,
              std::span<std::uint8_t> labels);
 
-  // Distance of p from the line through a and b.
-  static double offLine(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
-  // offLine(p, a, b) > tol, without a square root (the hot path).
+  // distanceToLine(p, a, b) > tol, without a square root (the hot path).
   static bool isOffLine(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b, double tol);
 
  private:

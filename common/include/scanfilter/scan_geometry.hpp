@@ -56,6 +56,9 @@ void worldPoints(const Scan& scan, const SensorInfo& sensor, BeamDirectionTable&
                  std::vector<Eigen::Vector2d>& out);
 void worldPoints(const Scan& scan, const SensorInfo& sensor, std::vector<Eigen::Vector2d>& out);
 
+// Distance of p from the line through a and b (from a when they coincide).
+double distanceToLine(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
+
 // True when the scan's beams cover a whole turn, so the first and last beams
 // are neighbours (the seam).
 bool isFullTurn(const Scan& scan);
