@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "scanfilter/filter_config.hpp"
 #include "scanfilter/map_files.hpp"
+#include "scanfilter/mines_log_reader.hpp"
 #include "scanfilter/occupancy_grid.hpp"
 #include "scanfilter/scan_source.hpp"
 #include "scanfilter/sim/odometry_drift.hpp"
@@ -43,11 +44,13 @@ RecordedLog readLog(const std::string& path, double carmen_range_max) {
   return log;
 }
 
-// One way of replaying a log: the filter config and the poses it sees.
+// One way of replaying a log: the filter config and the poses it sees. The
+// log as recorded also gets its maps drawn.
 struct Condition {
   std::string name;
   FilterConfig config;
   sim::OdometryDrift drift{};
+  bool as_recorded = false;
 };
 
 struct ReplayResult {
@@ -56,12 +59,15 @@ struct ReplayResult {
   std::vector<std::vector<std::uint8_t>> labels;
 };
 
-ReplayResult replay(const RecordedLog& log, const std::vector<Scan>& scans, const FilterConfig& config) {
+// keep_labels: also return every scan's labels (for the maps).
+ReplayResult replay(const RecordedLog& log, const std::vector<Scan>& scans, const FilterConfig& config,
+                    bool keep_labels) {
   TwoStepFilter filter(config.resolve(log.sensor), Implementation::kFast);
   ReplayResult out;
   std::chrono::duration<double> elapsed{0};
+  std::vector<std::uint8_t> labels;
   for (const auto& scan : scans) {
-    std::vector<std::uint8_t> labels(scan.size());
+    labels.resize(scan.size());
     const auto start = std::chrono::steady_clock::now();
     filter.apply(scan, log.sensor, labels);
     elapsed += std::chrono::steady_clock::now() - start;
@@ -70,7 +76,7 @@ ReplayResult replay(const RecordedLog& log, const std::vector<Scan>& scans, cons
       out.jump += code == static_cast<std::uint8_t>(PointCode::kJump);
       out.misdetected += code == static_cast<std::uint8_t>(PointCode::kMisdetected);
     }
-    out.labels.push_back(std::move(labels));
+    if (keep_labels) out.labels.push_back(labels);
   }
   out.resets = filter.penetration().resetCount();
   out.millis_per_scan = scans.empty() ? 0.0 : 1e3 * elapsed.count() / static_cast<double>(scans.size());
@@ -105,19 +111,22 @@ void saveSideBySide(const OccupancyGrid& unfiltered, const OccupancyGrid& filter
   image.save(path);
 }
 
-std::string pct(std::size_t part, std::size_t whole) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f %%", whole ? 100.0 * static_cast<double>(part) / static_cast<double>(whole) : 0.0);
+std::string fmt(const char* format, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
   return buf;
+}
+std::string pct(std::size_t part, std::size_t whole) {
+  return fmt("%.2f %%", whole ? 100.0 * static_cast<double>(part) / static_cast<double>(whole) : 0.0);
 }
 
 std::vector<Condition> conditions(const FilterConfig& base) {
   std::vector<Condition> out;
-  out.push_back({"as recorded", base});
+  out.push_back({"as recorded", base, {}, true});
   for (double lifetime : {1.0, 0.5}) {
     FilterConfig c = base;
     c.params.penetration.frame_lifetime = lifetime;
-    out.push_back({"T_max " + std::to_string(lifetime).substr(0, 3) + " s", c});
+    out.push_back({fmt("T_max %.1f s", lifetime), c});
   }
   FilterConfig no_reset = base;
   no_reset.params.penetration.pose_jump_reset = kNoPoseJumpReset;
@@ -140,18 +149,16 @@ int runReportReal(const ReportRealOptions& options) {
   for (const auto& path : options.logs) {
     std::cerr << "report-real: " << path << "\n";
     const RecordedLog log = readLog(path, options.carmen_range_max);
-    const bool odometry_only = log.source.find("dead-reckoned") != std::string::npos;
+    const bool odometry_only = log.source.starts_with(MinesLogReader::kSourcePrefix);
     const std::string poses = odometry_only ? "wheel odometry" : "as logged";
     for (const auto& condition : conditions(base)) {
       std::vector<Scan> scans = log.scans;
       sim::applyOdometryDrift(scans, condition.drift);
-      const ReplayResult r = replay(log, scans, condition.config);
-      char ms[32];
-      std::snprintf(ms, sizeof ms, "%.3f", r.millis_per_scan);
+      const ReplayResult r = replay(log, scans, condition.config, condition.as_recorded);
       report << "| " << log.name << " | " << poses << " | " << condition.name << " | " << scans.size() << " | "
              << r.returns << " | " << r.jump << " (" << pct(r.jump, r.returns) << ") | " << r.misdetected << " ("
-             << pct(r.misdetected, r.returns) << ") | " << r.resets << " | " << ms << " |\n";
-      if (condition.name != "as recorded") continue;
+             << pct(r.misdetected, r.returns) << ") | " << r.resets << " | " << fmt("%.3f", r.millis_per_scan) << " |\n";
+      if (!condition.as_recorded) continue;
       const OccupancyGrid filtered = buildMap(log, &r.labels), unfiltered = buildMap(log, nullptr);
       std::string picture = "-";
       if (!options.output_dir.empty()) {

@@ -35,7 +35,7 @@ bool MinesLogReader::looksLikeMinesLine(const std::string& line) {
 }
 
 MinesLogReader::MinesLogReader(const std::string& path, const MinesRobotModel& model) : lines_(path), model_(model) {
-  header_.source = "Mines URG-04LX log " + path + " (poses dead-reckoned from wheel ticks)";
+  header_.source = kSourcePrefix + path;
   header_.sensor.direction = BeamDirection::kCcw;
   header_.sensor.mount.x = model.laser_offset;
   header_.sensor.range_min = model.no_return_below;

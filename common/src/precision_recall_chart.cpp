@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 
@@ -16,10 +15,6 @@ constexpr Rgb kAxis{60, 60, 60}, kGridLine{225, 225, 225}, kIsoF1{200, 200, 235}
 constexpr std::array<double, 3> kIsoF1Levels = {0.5, 0.7, 0.9};
 constexpr double kTickStep = 0.2;
 
-std::string upper(std::string s) {
-  for (auto& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return s;
-}
 }  // namespace
 
 Rgb seriesColour(std::size_t k) {
@@ -43,7 +38,7 @@ PngImage PrecisionRecallChart::draw() const {
   PngImage image(kLeft + kPlotSize + kRight, kTop + kPlotSize + kBottom);
   const auto px = [](double recall) { return kLeft + static_cast<int>(std::lround(recall * kPlotSize)); };
   const auto py = [](double precision) { return kTop + kPlotSize - static_cast<int>(std::lround(precision * kPlotSize)); };
-  image.text(kLeft, 12, upper(title_), kText, kTextScale);
+  image.text(kLeft, 12, title_, kText, kTextScale);
   char tick[16];
   for (double v = 0.0; v <= 1.0 + 1e-9; v += kTickStep) {
     image.line(px(v), py(0), px(v), py(1), kGridLine);
@@ -75,7 +70,7 @@ PngImage PrecisionRecallChart::draw() const {
   for (const auto& e : entries_) {
     image.disc(px(std::clamp(e.recall, 0.0, 1.0)), py(std::clamp(e.precision, 0.0, 1.0)), 6, e.colour);
     image.disc(kLeft + kPlotSize + 96, legend_y + 6, 6, e.colour);
-    image.text(kLeft + kPlotSize + 110, legend_y, upper(e.name), kText, kTextScale);
+    image.text(kLeft + kPlotSize + 110, legend_y, e.name, kText, kTextScale);
     legend_y += 24;
   }
   return image;

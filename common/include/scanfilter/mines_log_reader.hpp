@@ -30,6 +30,10 @@ struct MinesRobotModel {
 // origin), so they drift as wheel odometry does.
 class MinesLogReader final : public ScanSource {
  public:
+  // How header().source begins: what tells a reader these poses are wheel
+  // odometry, not corrected ones.
+  static constexpr const char* kSourcePrefix = "Mines URG-04LX log (poses dead-reckoned from wheel ticks) ";
+
   explicit MinesLogReader(const std::string& path, const MinesRobotModel& model = {});
 
   const ScanLogHeader& header() const override { return header_; }

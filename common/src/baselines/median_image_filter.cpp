@@ -15,9 +15,12 @@ MedianImageFilter::CellKey MedianImageFilter::key(std::int32_t x, std::int32_t y
   return (static_cast<CellKey>(static_cast<std::uint32_t>(x)) << 32) | static_cast<std::uint32_t>(y);
 }
 
+std::int32_t MedianImageFilter::cellIndex(double coordinate) const {
+  return static_cast<std::int32_t>(std::floor(coordinate / params_.cell_size));
+}
+
 MedianImageFilter::CellKey MedianImageFilter::cellOf(const Eigen::Vector2d& p) const {
-  return key(static_cast<std::int32_t>(std::floor(p.x() / params_.cell_size)),
-             static_cast<std::int32_t>(std::floor(p.y() / params_.cell_size)));
+  return key(cellIndex(p.x()), cellIndex(p.y()));
 }
 
 void MedianImageFilter::addFrame(const std::vector<CellKey>& cells, int delta) {
@@ -34,8 +37,7 @@ int MedianImageFilter::greyAt(std::int32_t x, std::int32_t y) const {
 }
 
 int MedianImageFilter::smoothedGrey(const Eigen::Vector2d& p) {
-  const auto cx = static_cast<std::int32_t>(std::floor(p.x() / params_.cell_size));
-  const auto cy = static_cast<std::int32_t>(std::floor(p.y() / params_.cell_size));
+  const std::int32_t cx = cellIndex(p.x()), cy = cellIndex(p.y());
   const int half = params_.window / 2;
   window_values_.clear();
   for (int dy = -half; dy <= half; ++dy)

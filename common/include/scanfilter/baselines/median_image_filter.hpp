@@ -41,6 +41,7 @@ class MedianImageFilter final : public ScanFilter {
 
  private:
   using CellKey = std::uint64_t;
+  std::int32_t cellIndex(double coordinate) const;  // along one axis
   CellKey cellOf(const Eigen::Vector2d& p) const;
   static CellKey key(std::int32_t x, std::int32_t y);
   void addFrame(const std::vector<CellKey>& cells, int delta);
