@@ -100,7 +100,7 @@ void publish(Writer& writer, const std::vector<Scan>& scans, const SensorInfo& s
       std::this_thread::sleep_until(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                                 std::chrono::duration<double>(static_cast<double>(k) / rate_hz)));
     Scan scan = scans[k % scans.size()];
-    scan.stamp = static_cast<double>(first_sequence + k) * 0.1;  // strictly increasing stamps for step 2
+    scan.stamp = Stamp::fromSeconds(static_cast<double>(first_sequence + k) * 0.1);  // strictly increasing stamps for step 2
     toMessage(scan, sensor, first_sequence + k, msg);
     stampStage(msg, "bench_source", wallClockNow());
     if (!writer.write(msg)) std::fprintf(stderr, "write failed at %zu\n", k);

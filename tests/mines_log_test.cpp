@@ -33,7 +33,7 @@ TEST(MinesLog, ReadsRangesAnglesAndTime) {
   ScanRecord r;
   ASSERT_TRUE(source->next(r));
   EXPECT_EQ(r.line, 1u);
-  EXPECT_DOUBLE_EQ(r.scan.stamp, 1.0);
+  EXPECT_EQ(r.scan.stamp.toDecimal(), "1");
   ASSERT_EQ(r.scan.size(), 682u);
   EXPECT_TRUE(std::isnan(r.scan.ranges[0])) << "12 mm is a URG error code, not a return";
   EXPECT_DOUBLE_EQ(r.scan.ranges[1], 1.5);

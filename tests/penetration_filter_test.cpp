@@ -36,7 +36,7 @@ class BothFilters {
       ref[i] = fast[i] = scan.hasReturn(i) ? kValid : static_cast<std::uint8_t>(PointCode::kNoReturn);
     reference_->apply(scan, sensor, ref);
     fast_->apply(scan, sensor, fast);
-    EXPECT_EQ(ref, fast) << "fast and reference disagree at stamp " << scan.stamp;
+    EXPECT_EQ(ref, fast) << "fast and reference disagree at stamp " << scan.stamp.toDecimal();
     return fast;
   }
   const PenetrationFilter& fast() const { return *fast_; }

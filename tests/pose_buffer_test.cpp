@@ -8,11 +8,17 @@
 namespace scanfilter {
 namespace {
 
+// Stamps a little after a large epoch, where a double would blur nanoseconds.
+Stamp t(double seconds_after_epoch) {
+  constexpr std::int64_t kEpoch = 1'732'000'000 * Stamp::kNanosPerSecond;
+  return Stamp::fromNanoseconds(kEpoch + Stamp::fromSeconds(seconds_after_epoch).nanoseconds());
+}
+
 TEST(PoseBuffer, InterpolatesBetweenSamples) {
   PoseBuffer buffer(0.5, 10.0);
-  buffer.add(1.0, {0.0, 0.0, 0.0});
-  buffer.add(1.2, {1.0, 2.0, 0.4});
-  const auto p = buffer.at(1.05);
+  buffer.add(t(1.0), {0.0, 0.0, 0.0});
+  buffer.add(t(1.2), {1.0, 2.0, 0.4});
+  const auto p = buffer.at(t(1.05));
   ASSERT_TRUE(p);
   EXPECT_NEAR(p->x, 0.25, 1e-12);
   EXPECT_NEAR(p->y, 0.5, 1e-12);
@@ -21,32 +27,42 @@ TEST(PoseBuffer, InterpolatesBetweenSamples) {
 
 TEST(PoseBuffer, HeadingTakesTheShorterArc) {
   PoseBuffer buffer(0.5, 10.0);
-  buffer.add(0.0, {0, 0, 3.0});
-  buffer.add(1.0, {0, 0, -3.0});  // 0.28 rad further on, across ±π
-  const auto p = buffer.at(0.5);
+  buffer.add(t(0.0), {0, 0, 3.0});
+  buffer.add(t(1.0), {0, 0, -3.0});  // 0.28 rad further on, across ±π
+  const auto p = buffer.at(t(0.5));
   ASSERT_TRUE(p);
   EXPECT_NEAR(std::abs(p->theta), std::numbers::pi, 1e-9);
 }
 
 TEST(PoseBuffer, NoPoseOutOfReachOrOutsideTheSamples) {
   PoseBuffer buffer(0.1, 10.0);
-  buffer.add(1.0, {0, 0, 0});
-  buffer.add(2.0, {1, 0, 0});
-  EXPECT_FALSE(buffer.at(1.5)) << "samples 1 s apart, 0.1 s allowed";
-  EXPECT_FALSE(buffer.at(0.5)) << "before the first sample";
-  EXPECT_FALSE(buffer.at(2.5)) << "after the last sample";
-  EXPECT_TRUE(buffer.mayStillPose(2.5));
-  EXPECT_FALSE(buffer.mayStillPose(1.5)) << "a later sample exists: the gap is final";
-  EXPECT_TRUE(PoseBuffer(0.1, 10.0).mayStillPose(0.0)) << "no odometry yet: wait for it";
-  EXPECT_TRUE(buffer.at(2.0));
+  buffer.add(t(1.0), {0, 0, 0});
+  buffer.add(t(2.0), {1, 0, 0});
+  EXPECT_FALSE(buffer.at(t(1.5))) << "samples 1 s apart, 0.1 s allowed";
+  EXPECT_FALSE(buffer.at(t(0.5))) << "before the first sample";
+  EXPECT_FALSE(buffer.at(t(2.5))) << "after the last sample";
+  EXPECT_TRUE(buffer.mayStillPose(t(2.5)));
+  EXPECT_FALSE(buffer.mayStillPose(t(1.5))) << "a later sample exists: the gap is final";
+  EXPECT_TRUE(PoseBuffer(0.1, 10.0).mayStillPose(t(0.0))) << "no odometry yet: wait for it";
+  EXPECT_TRUE(buffer.at(t(2.0)));
+}
+
+TEST(PoseBuffer, AScanAtASampleStampGetsThatSampleExactly) {
+  PoseBuffer buffer(0.1, 10.0);
+  const Stamp a = Stamp::fromSecNanosec(1'732'000'000, 200'700'000);
+  const Stamp b = Stamp::fromSecNanosec(1'732'000'000, 200'700'001);  // 1 ns later
+  buffer.add(a, {1, 0, 0});
+  buffer.add(b, {2, 0, 0});
+  EXPECT_EQ(buffer.at(b)->x, 2.0);
+  EXPECT_EQ(buffer.at(a)->x, 1.0);
 }
 
 TEST(PoseBuffer, OutOfOrderSamplesAreIgnoredAndOldOnesDropped) {
   PoseBuffer buffer(0.5, 1.0);
-  EXPECT_TRUE(buffer.add(1.0, {0, 0, 0}));
-  EXPECT_FALSE(buffer.add(0.9, {5, 5, 0}));
-  buffer.add(1.5, {1, 0, 0});
-  buffer.add(3.0, {2, 0, 0});
+  EXPECT_TRUE(buffer.add(t(1.0), {0, 0, 0}));
+  EXPECT_FALSE(buffer.add(t(0.9), {5, 5, 0}));
+  buffer.add(t(1.5), {1, 0, 0});
+  buffer.add(t(3.0), {2, 0, 0});
   EXPECT_EQ(buffer.size(), 1u) << "samples more than 1 s older than the newest are dropped";
 }
 

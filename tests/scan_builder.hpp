@@ -48,7 +48,7 @@ inline Scan castScan(const World& world, const Pose2& pose, const SensorInfo& se
   scene.legs = world.legs;
   const sim::RayCaster caster(scene);
   Scan scan;
-  scan.stamp = stamp;
+  scan.stamp = Stamp::fromSeconds(stamp);
   scan.pose = pose;
   scan.angle_min = 0.0;
   scan.angle_increment = 2.0 * std::numbers::pi / beams;

@@ -27,7 +27,7 @@ int runDiff(const DiffOptions& options) {
     std::size_t here = 0;
     for (std::size_t i = 0; i < ra.scan.labels.size(); ++i) here += ra.scan.labels[i] != rb.scan.labels[i];
     if (here > 0 && differing_scans++ == 0)
-      std::cout << "first difference: scan " << scans << " (stamp " << ra.scan.stamp << "), " << here << " beams\n";
+      std::cout << "first difference: scan " << scans << " (stamp " << ra.scan.stamp.toDecimal() << "), " << here << " beams\n";
     differing_beams += here;
   }
   std::cout << scans << " scans compared; " << differing_scans << " differ in " << differing_beams << " labels\n";

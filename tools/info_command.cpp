@@ -15,7 +15,8 @@ int runInfo(const InfoOptions& options) {
   auto source = openScanSource(options.input, source_options);
   const ScanLogHeader& h = source->header();
   std::size_t scans = 0, beams = 0, returns = 0, labelled = 0, with_truth = 0;
-  double first = 0.0, last = 0.0, path = 0.0;
+  Stamp first, last;
+  double path = 0.0;
   std::size_t min_beams = SIZE_MAX, max_beams = 0;
   std::array<std::size_t, kPointCodeCount> label_counts{};
   Pose2 previous;
@@ -42,7 +43,9 @@ int runInfo(const InfoOptions& options) {
             << h.sensor.range_min << "-" << h.sensor.range_max << " m, angular accuracy "
             << h.sensor.angular_accuracy_deg << " deg\n"
             << "scans:     " << scans << " (" << min_beams << "-" << max_beams << " beams)\n"
-            << "duration:  " << (last - first) << " s, path " << path << " m\n"
+            << "duration:  " << last.secondsSince(first) << " s (" << first.toDecimal() << " to " << last.toDecimal()
+            << "), path " << path << " m\n"
+            << "stamps:    " << source->stampRegressions() << " earlier than the scan before (kept in file order)\n"
             << "returns:   " << returns << " of " << beams << " beams\n"
             << "truth:     " << with_truth << " scans, labels: " << labelled << " scans\n";
   if (labelled > 0) {

@@ -29,9 +29,16 @@ constexpr int kSensorQueueDepth = 10;
 // lost even on a reliable stream. A short wait after matching closes that gap.
 constexpr auto kDiscoverySettle = std::chrono::milliseconds(300);
 
-// The scan as a ROS LaserScan: counter-clockwise angles, no return as NaN.
-void toLaserScan(const Scan& scan, const SensorInfo& sensor, const std::string& frame, LaserScanMsg& out) {
-  const double sign = sensor.direction == BeamDirection::kCw ? -1.0 : 1.0;
+// One more odometry sample this long after the last scan, so it too can be posed.
+constexpr std::int64_t kLastOdometryDelayNs = 1'000'000;
+
+// The scan as a ROS LaserScan in the sensor's own frame: counter-clockwise
+// about the sensor's z axis, which points down when it is mounted upside
+// down; the ranges as recorded (REP 117: +inf no return, NaN an error).
+void toLaserScan(const Scan& scan, const SensorInfo& sensor, bool upside_down, const std::string& frame,
+                 LaserScanMsg& out) {
+  const bool log_clockwise = sensor.direction == BeamDirection::kCw;
+  const double sign = log_clockwise == upside_down ? 1.0 : -1.0;
   out.header().stamp(toTimeMsg(scan.stamp));
   out.header().frame_id(frame);
   out.angle_min(static_cast<float>(sign * scan.angle_min));
@@ -39,8 +46,9 @@ void toLaserScan(const Scan& scan, const SensorInfo& sensor, const std::string& 
   out.angle_max(static_cast<float>(sign * (scan.angle_min + scan.angle_increment * static_cast<double>(scan.size() - 1))));
   out.range_min(static_cast<float>(sensor.range_min));
   out.range_max(static_cast<float>(sensor.range_max));
-  out.ranges().resize(scan.size());
-  for (std::size_t i = 0; i < scan.size(); ++i) out.ranges()[i] = static_cast<float>(scan.ranges[i]);
+  const auto recorded = scan.rangesAsRecorded();
+  out.ranges().resize(recorded.size());
+  for (std::size_t i = 0; i < recorded.size(); ++i) out.ranges()[i] = static_cast<float>(recorded[i]);
   out.intensities().assign(scan.intensities.begin(), scan.intensities.end());
 }
 
@@ -55,6 +63,7 @@ int main(int argc, char** argv) {
   double rate_hz = 0.0;
   int wait_readers = 1;
   bool reliable = false;
+  bool upside_down = false;
   app.add_option("input", input, "scan log or CARMEN log")->required()->check(CLI::ExistingFile);
   app.add_option("--domain", settings.domain_id, "DDS domain id")->capture_default_str();
   app.add_option("--namespace", ns, "topic namespace (rt/<ns>/scan)");
@@ -62,6 +71,8 @@ int main(int argc, char** argv) {
   app.add_option("--frame-id", frame, "LaserScan frame_id")->capture_default_str();
   app.add_option("--rate", rate_hz, "scans per second (0: the recorded pace)");
   app.add_option("--wait-readers", wait_readers, "wait for this many scan readers before publishing")->capture_default_str();
+  app.add_flag("--upside-down", upside_down,
+               "publish as a sensor mounted upside down (roll pi) would: a clockwise log's angles as recorded");
   app.add_flag("--reliable", reliable, "reliable writers (default: best effort, as sensor drivers publish)");
   app.set_version_flag("--version", "ros_scan_publisher (scanfilter " SCANFILTER_VERSION ")");
   CLI11_PARSE(app, argc, argv);
@@ -85,12 +96,12 @@ int main(int argc, char** argv) {
     odom_msg.header().frame_id("odom");
     odom_msg.child_frame_id("base_link");
     std::size_t published = 0;
-    double first_stamp = 0.0;
+    Stamp first_stamp;
     const auto start = std::chrono::steady_clock::now();
     while (!ShutdownSignal::requested() && source->next(record)) {
       const Scan& s = record.scan;
       if (published == 0) first_stamp = s.stamp;
-      const double due_s = rate_hz > 0 ? static_cast<double>(published) / rate_hz : s.stamp - first_stamp;
+      const double due_s = rate_hz > 0 ? static_cast<double>(published) / rate_hz : s.stamp.secondsSince(first_stamp);
       std::this_thread::sleep_until(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                                 std::chrono::duration<double>(due_s)));
       odom_msg.header().stamp(toTimeMsg(s.stamp));
@@ -98,12 +109,12 @@ int main(int argc, char** argv) {
       odom_msg.pose().pose().position().y(s.pose.y);
       odom_msg.pose().pose().orientation(quaternionOfYaw(s.pose.theta));
       odometry.write(odom_msg);
-      toLaserScan(s, sensor, frame, scan_msg);
+      toLaserScan(s, sensor, upside_down, frame, scan_msg);
       scans.write(scan_msg);
       ++published;
     }
     // One more odometry sample after the last scan, so it too can be posed.
-    odom_msg.header().stamp(toTimeMsg(record.scan.stamp + 1e-3));
+    odom_msg.header().stamp(toTimeMsg(Stamp::fromNanoseconds(record.scan.stamp.nanoseconds() + kLastOdometryDelayNs)));
     odometry.write(odom_msg);
     // Reliable streams: exiting deletes the writers, and with them whatever
     // the readers have not acknowledged yet.

@@ -31,7 +31,7 @@ bool isScanLine(const std::string& line) {
 }  // namespace
 
 CarmenLogReader::CarmenLogReader(const std::string& path, const ScanSourceOptions& options)
-    : lines_(path) {
+    : lines_(path), stamp_order_(path, "ipc_timestamp") {
   header_.source = "CARMEN log " + path;
   header_.sensor.direction = BeamDirection::kCcw;
   header_.sensor.range_max = options.carmen_range_max;
@@ -78,14 +78,25 @@ double CarmenLogReader::number(const std::vector<std::string>& tokens, std::size
   return value;
 }
 
+Stamp CarmenLogReader::stamp(const std::vector<std::string>& tokens, std::size_t index) const {
+  // The decimal text itself, not a double: the stamp must survive to the nanosecond.
+  number(tokens, index, "ipc_timestamp");  // same checks and message as every other number
+  const auto stamp = Stamp::parseDecimal(tokens[index]);
+  if (!stamp) fail("ipc_timestamp (field " + std::to_string(index + 1) + ")", "out of range: \"" + tokens[index] + "\"");
+  return *stamp;
+}
+
 void CarmenLogReader::setRanges(const std::vector<std::string>& tokens, std::size_t first,
                                 std::size_t count, Scan& scan) const {
   scan.ranges.resize(count);
+  scan.recorded_ranges.resize(count);
   for (std::size_t i = 0; i < count; ++i) {
     const double r = number(tokens, first + i, "range");
     if (r < 0.0) fail("range " + std::to_string(i), "is negative (" + tokens[first + i] + ")");
     const bool no_return = r < header_.sensor.range_min || r >= header_.sensor.range_max || r == 0.0;
     scan.ranges[i] = no_return ? kNaN : r;
+    // CARMEN writes its maximum for "no return within range": REP 117's +inf.
+    scan.recorded_ranges[i] = r >= header_.sensor.range_max ? std::numeric_limits<double>::infinity() : r;
   }
 }
 
@@ -99,7 +110,7 @@ void CarmenLogReader::parseFlaser(const std::vector<std::string>& tokens, Scan& 
   setRanges(tokens, 2, n, scan);
   const std::size_t pose = 2 + n;
   scan.pose = {number(tokens, pose, "x"), number(tokens, pose + 1, "y"), number(tokens, pose + 2, "theta")};
-  scan.stamp = number(tokens, pose + 6, "ipc_timestamp");
+  scan.stamp = stamp(tokens, pose + 6);
   const double steps = n % 2 == 1 && n > 1 ? static_cast<double>(n - 1) : static_cast<double>(n);
   scan.angle_min = -kFlaserFieldOfView / 2.0;
   scan.angle_increment = kFlaserFieldOfView / steps;
@@ -127,7 +138,7 @@ void CarmenLogReader::parseRobotLaser(const std::vector<std::string>& tokens, Sc
   // The laser pose is given directly, so it is the pose and the mount is zero.
   scan.pose = {number(tokens, after, "laser_pose_x"), number(tokens, after + 1, "laser_pose_y"),
                number(tokens, after + 2, "laser_pose_theta")};
-  scan.stamp = number(tokens, after + 10, "ipc_timestamp");
+  scan.stamp = stamp(tokens, after + 10);
   scan.angle_min = start_angle;
   scan.angle_increment = resolution;
 }
@@ -156,13 +167,7 @@ bool CarmenLogReader::next(ScanRecord& record) {
   const auto tokens = splitFields(line);
   if (tokens[0] == "FLASER") parseFlaser(tokens, record.scan);
   else parseRobotLaser(tokens, record.scan);
-  if (record.scan.stamp < last_stamp_) {
-    if (stamp_regressions_++ == 0)
-      spdlog::warn("{}:{}: ipc_timestamp {} is earlier than the previous scan's {}; kept in file order "
-                   "(further regressions are counted, not logged)",
-                   lines_.path(), current_line_, record.scan.stamp, last_stamp_);
-  }
-  last_stamp_ = record.scan.stamp;
+  stamp_order_.check(record.scan.stamp, current_line_);
   return true;
 }
 

@@ -17,7 +17,7 @@ constexpr std::size_t kTimeField = 0;
 constexpr std::size_t kLeftTicksField = 2;
 constexpr std::size_t kRightTicksField = 3;
 constexpr std::size_t kFirstRangeField = 24;
-constexpr double kMicros = 1e-6;
+constexpr std::int64_t kNanosPerMicro = 1000;
 constexpr double kMillimetres = 1e-3;
 constexpr double kDeg = std::numbers::pi / 180.0;
 
@@ -34,7 +34,7 @@ bool MinesLogReader::looksLikeMinesLine(const std::string& line) {
   return tokens.size() == kFieldCount && isInteger(tokens[kTimeField]);
 }
 
-MinesLogReader::MinesLogReader(const std::string& path, const MinesRobotModel& model) : lines_(path), model_(model) {
+MinesLogReader::MinesLogReader(const std::string& path, const MinesRobotModel& model) : lines_(path), stamp_order_(path, "timestamp_us"), model_(model) {
   header_.source = kSourcePrefix + path;
   header_.sensor.direction = BeamDirection::kCcw;
   header_.sensor.mount.x = model.laser_offset;
@@ -85,15 +85,18 @@ bool MinesLogReader::next(ScanRecord& record) {
   scan = Scan{};
   record.original = nullptr;
   record.line = lines_.lineNumber();
-  scan.stamp = static_cast<double>(integerField(tokens, kTimeField, "timestamp_us")) * kMicros;
+  scan.stamp = Stamp::fromNanoseconds(integerField(tokens, kTimeField, "timestamp_us") * kNanosPerMicro);
+  stamp_order_.check(scan.stamp, record.line);
   integrateOdometry(integerField(tokens, kLeftTicksField, "left_ticks"),
                     integerField(tokens, kRightTicksField, "right_ticks"));
   scan.pose = pose_;
   scan.angle_min = model_.angle_min_deg * kDeg;
   scan.angle_increment = model_.field_of_view_deg / (model_.beams - 1) * kDeg;
   scan.ranges.resize(static_cast<std::size_t>(model_.beams));
+  scan.recorded_ranges.resize(scan.ranges.size());
   for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
     const double r = static_cast<double>(integerField(tokens, kFirstRangeField + i, "range_mm")) * kMillimetres;
+    scan.recorded_ranges[i] = r;
     scan.ranges[i] = r < model_.no_return_below || r > model_.range_max ? std::numeric_limits<double>::quiet_NaN() : r;
   }
   return true;

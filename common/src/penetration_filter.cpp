@@ -26,21 +26,21 @@ void PenetrationFilter::reset() {
   last_origin_.reset();
 }
 
-void PenetrationFilter::resetOnPoseJump(const Eigen::Vector2d& origin, double stamp) {
+void PenetrationFilter::resetOnPoseJump(const Eigen::Vector2d& origin, Stamp stamp) {
   if (last_origin_ && (origin - *last_origin_).norm() > params_.pose_jump_reset) {
     // A relocalisation or a bad pose: the cached frames no longer line up
     // with the new one, so judging against them would delete good points.
-    spdlog::info("penetration filter: sensor moved {:.3f} m between frames at stamp {:.3f} "
+    spdlog::info("penetration filter: sensor moved {:.3f} m between frames at stamp {} "
                  "(limit {:.3f} m); cache reset",
-                 (origin - *last_origin_).norm(), stamp, params_.pose_jump_reset);
+                 (origin - *last_origin_).norm(), stamp.toDecimal(), params_.pose_jump_reset);
     reset();
     ++resets_;
   }
   last_origin_ = origin;
 }
 
-void PenetrationFilter::expireFrames(double stamp) {
-  while (!cache_.empty() && (stamp - cache_.front().stamp > params_.frame_lifetime ||
+void PenetrationFilter::expireFrames(Stamp stamp) {
+  while (!cache_.empty() && (stamp.secondsSince(cache_.front().stamp) > params_.frame_lifetime ||
                              cache_.size() >= params_.max_cache_frames)) {
     for (const auto& p : cache_.front().points) {
       grid_.remove(p);
@@ -51,7 +51,7 @@ void PenetrationFilter::expireFrames(double stamp) {
   }
 }
 
-void PenetrationFilter::cacheFrame(double stamp, std::span<const std::uint8_t> labels) {
+void PenetrationFilter::cacheFrame(Stamp stamp, std::span<const std::uint8_t> labels) {
   CachedFrame frame{stamp, {}, {}};
   for (std::size_t i = 0; i < labels.size(); ++i) {
     const auto code = static_cast<PointCode>(labels[i]);

@@ -2,7 +2,8 @@
 
 #include <cmath>
 #include <limits>
-#include <sstream>
+#include <optional>
+#include <string_view>
 
 #include "scanfilter/input_error.hpp"
 #include "scanfilter/point_code.hpp"
@@ -65,10 +66,36 @@ Json parseLine(const std::string& text, const std::string& file, std::size_t lin
   }
 }
 
-bool isNaNString(const Json& value) {
-  if (!value.is_string()) return false;
+// The value a range string names: "NaN"/"nan", "inf"/"Infinity" (+inf,
+// REP 117's "no return within range") or "-inf"; nothing for other strings.
+std::optional<double> namedRange(const Json& value) {
+  if (!value.is_string()) return std::nullopt;
   const auto& s = value.get_ref<const std::string&>();
-  return s == "NaN" || s == "nan" || s == "inf" || s == "Infinity" || s == "-inf";
+  if (s == "NaN" || s == "nan") return kNaN;
+  if (s == "inf" || s == "Infinity") return std::numeric_limits<double>::infinity();
+  if (s == "-inf") return -std::numeric_limits<double>::infinity();
+  return std::nullopt;
+}
+
+// The text of the number under a top-level key of a JSON object that has
+// already parsed: JSON numbers reach us as doubles, and a stamp must not.
+std::string_view topLevelNumberText(std::string_view json, std::string_view key) {
+  int depth = 0;
+  for (std::size_t i = 0; i < json.size(); ++i) {
+    const char c = json[i];
+    if (c == '{' || c == '[') ++depth;
+    else if (c == '}' || c == ']') --depth;
+    if (c != '"') continue;
+    const std::size_t start = ++i;
+    while (i < json.size() && json[i] != '"') i += json[i] == '\\' ? 2 : 1;
+    const std::string_view text = json.substr(start, i - start);
+    std::size_t colon = json.find_first_not_of(" \t\r", i + 1);
+    if (depth != 1 || text != key || colon == std::string_view::npos || json[colon] != ':') continue;
+    const std::size_t begin = json.find_first_not_of(" \t\r", colon + 1);
+    const std::size_t end = json.find_first_not_of("+-0123456789.eE", begin);
+    return json.substr(begin, end == std::string_view::npos ? std::string_view::npos : end - begin);
+  }
+  return {};
 }
 
 std::vector<std::uint8_t> parseCodes(const Json& array, const char* key, std::size_t expected,
@@ -90,7 +117,7 @@ std::vector<std::uint8_t> parseCodes(const Json& array, const char* key, std::si
 
 }  // namespace
 
-ScanLogReader::ScanLogReader(const std::string& path) : lines_(path) { parseHeader(); }
+ScanLogReader::ScanLogReader(const std::string& path) : lines_(path), stamp_order_(path, "stamp") { parseHeader(); }
 
 void ScanLogReader::parseHeader() {
   std::string text;
@@ -134,21 +161,18 @@ bool ScanLogReader::next(ScanRecord& record) {
   } while (text.find_first_not_of(" \t") == std::string::npos);  // blank lines carry nothing
   record.line = lines_.lineNumber();
   record.original = parseLine(text, lines_.path(), record.line);
-  parseScan(record.original, record.scan);
+  parseScan(record.original, topLevelNumberText(text, "stamp"), record.scan);
   return true;
 }
 
-void ScanLogReader::parseScan(const Json& object, Scan& scan) {
+void ScanLogReader::parseScan(const Json& object, std::string_view stamp_text, Scan& scan) {
   const FieldChecker check(lines_.path(), lines_.lineNumber());
   scan = Scan{};
-  scan.stamp = check.finiteNumber(check.require(object, "stamp"), "stamp");
-  if (have_stamp_ && scan.stamp < last_stamp_) {
-    std::ostringstream problem;
-    problem.precision(17);
-    problem << scan.stamp << " is earlier than the previous scan's " << last_stamp_
-            << "; stamps must not decrease";
-    check.fail("stamp", problem.str());
-  }
+  check.finiteNumber(check.require(object, "stamp"), "stamp");
+  const auto stamp = Stamp::parseDecimal(stamp_text);
+  if (!stamp) check.fail("stamp", "\"" + std::string(stamp_text) + "\" is out of range for a stamp in nanoseconds");
+  scan.stamp = *stamp;
+  stamp_order_.check(scan.stamp, lines_.lineNumber());
   const auto pose = check.triple(check.require(object, "pose"), "pose");
   scan.pose = {pose[0], pose[1], pose[2]};
   scan.angle_min = check.finiteNumber(check.require(object, "angle_min"), "angle_min");
@@ -164,11 +188,14 @@ void ScanLogReader::parseScan(const Json& object, Scan& scan) {
   const std::size_t n = ranges.size();
   const SensorInfo& sensor = header_.sensor;
   scan.ranges.resize(n);
+  scan.recorded_ranges.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const Json& v = ranges[i];
     const std::string field = "ranges[" + std::to_string(i) + "]";
-    if (v.is_null() || isNaNString(v)) {
+    const auto named = v.is_null() ? std::optional<double>(kNaN) : namedRange(v);
+    if (named) {
       scan.ranges[i] = kNaN;
+      scan.recorded_ranges[i] = *named;
       continue;
     }
     if (!v.is_number()) check.fail(field, "expected a number or null, got " + FieldChecker::describe(v));
@@ -179,6 +206,7 @@ void ScanLogReader::parseScan(const Json& object, Scan& scan) {
                             std::to_string(static_cast<int>(kImplausibleRange)) + " m or null");
     // 0 and values outside the sensor's limits are "no return" by the format.
     scan.ranges[i] = (r == 0.0 || r < sensor.range_min || r > sensor.range_max) ? kNaN : r;
+    scan.recorded_ranges[i] = r;
   }
 
   if (const auto it = object.find("intensities"); it != object.end() && !it->is_null()) {
@@ -202,8 +230,6 @@ void ScanLogReader::parseScan(const Json& object, Scan& scan) {
       scan.thin_leg_beams.push_back(v.get<std::uint32_t>());
     }
   }
-  last_stamp_ = scan.stamp;
-  have_stamp_ = true;
 }
 
 }  // namespace scanfilter

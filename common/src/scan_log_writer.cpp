@@ -23,23 +23,41 @@ Json headerToJson(const ScanLogHeader& header) {
   return out;
 }
 
+namespace {
+
+// A range as the format writes it: null for NaN, the strings "inf" / "-inf"
+// for infinities (JSON has no such numbers), the number otherwise.
+Json rangeToJson(double r) {
+  if (std::isnan(r)) return nullptr;
+  if (std::isinf(r)) return r > 0 ? "inf" : "-inf";
+  return r;
+}
+
+// Every key but the stamp.
 Json scanToJson(const Scan& scan) {
   Json out;
-  out["stamp"] = scan.stamp;
   out["pose"] = {scan.pose.x, scan.pose.y, scan.pose.theta};
   out["angle_min"] = scan.angle_min;
   out["angle_increment"] = scan.angle_increment;
   Json ranges = Json::array();
-  for (double r : scan.ranges) {
-    if (std::isnan(r)) ranges.push_back(nullptr);
-    else ranges.push_back(r);
-  }
+  for (double r : scan.rangesAsRecorded()) ranges.push_back(rangeToJson(r));
   out["ranges"] = std::move(ranges);
   if (!scan.intensities.empty()) out["intensities"] = scan.intensities;
   if (!scan.truth.empty()) out["truth"] = scan.truth;
   if (!scan.thin_leg_beams.empty()) out["truth_thin_leg"] = scan.thin_leg_beams;
   if (!scan.labels.empty()) out["labels"] = scan.labels;
   return out;
+}
+
+}  // namespace
+
+std::string scanLine(const ScanRecord& record) {
+  Json object = record.original.is_object() ? record.original : scanToJson(record.scan);
+  if (!record.scan.labels.empty()) object["labels"] = record.scan.labels;
+  object.erase("stamp");
+  const std::string rest = object.dump();  // "{...}"
+  const std::string stamp = "{\"stamp\":" + record.scan.stamp.toDecimal();
+  return rest.size() > 2 ? stamp + "," + rest.substr(1) : stamp + "}";
 }
 
 ScanLogWriter::ScanLogWriter(const std::string& path, const ScanLogHeader& header)
@@ -49,13 +67,7 @@ ScanLogWriter::ScanLogWriter(const std::string& path, const ScanLogHeader& heade
 }
 
 void ScanLogWriter::write(const ScanRecord& record) {
-  if (record.original.is_object()) {
-    Json line = record.original;
-    if (!record.scan.labels.empty()) line["labels"] = record.scan.labels;
-    out_ << line.dump() << '\n';
-  } else {
-    out_ << scanToJson(record.scan).dump() << '\n';
-  }
+  out_ << scanLine(record) << '\n';
   if (!out_) throw InputError(path_, 0, "", "write failed (disk full?)");
 }
 

@@ -1,7 +1,8 @@
 // penetration_filter: step 2 of the two-step filter as a service. Reads
 // rt/<ns>/jump_filtered_scan, labels misdetected points, publishes the
 // labelled scan on rt/<ns>/labeled_scan and a REP 117 LaserScan (removed
-// beams +inf) on rt/<ns>/scan_filtered for rviz2, slam_toolbox or nav2.
+// beams NaN by default, kept beams bit-identical) on rt/<ns>/scan_filtered for
+// rviz2, slam_toolbox or nav2.
 #include <memory>
 
 #include <spdlog/spdlog.h>
@@ -29,6 +30,9 @@ int main(int argc, char** argv) {
     YamlSection scan_section(config.root, "laser_scan", config.path);
     std::string frame_id = "laser";
     scan_section.read("frame_id", frame_id);
+    std::string removed_beams = "nan";
+    scan_section.readChoice("removed_beams", removed_beams, {"nan", "inf"});
+    const RemovedBeamValue removed = removed_beams == "nan" ? RemovedBeamValue::kNaN : RemovedBeamValue::kInfinity;
     scan_section.rejectUnknownKeys();
 
     ShutdownSignal::install();
@@ -48,7 +52,7 @@ int main(int argc, char** argv) {
           if (enabled) filter->apply(scan, sensor, labels);
         },
         [&](const LabeledScanMsg& msg) {
-          toFilteredLaserScan(msg, frame_id, laser);
+          toFilteredLaserScan(msg, frame_id, removed, laser);
           laser_writer.write(laser);
         });
     spdlog::info("started: domain {}, {} -> {} and {}, metrics http://{}/metrics",

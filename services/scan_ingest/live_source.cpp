@@ -33,7 +33,11 @@ void LiveSource::onOdometry(dds_io::OdometryMsg& msg) {
     return;
   }
   std::lock_guard lock(mutex_);
-  poses_.add(dds_io::toSeconds(msg.header().stamp()), {p.position().x(), p.position().y(), dds_io::yawOf(p.orientation())});
+  if (!dds_io::isValidTime(msg.header().stamp())) {
+    metrics_.sampleRejected("bad_stamp");
+    return;
+  }
+  poses_.add(dds_io::toStamp(msg.header().stamp()), {p.position().x(), p.position().y(), dds_io::yawOf(p.orientation())});
 }
 
 void LiveSource::onScan(dds_io::LaserScanMsg& msg) {
@@ -51,8 +55,13 @@ void LiveSource::onScan(dds_io::LaserScanMsg& msg) {
     metrics_.sampleRejected("zero_increment");
     return;
   }
+  if (!dds_io::isValidTime(msg.header().stamp())) {
+    metrics_.sampleRejected("bad_stamp");
+    return;
+  }
   Pending pending;
   dds_io::fromLaserScan(msg, settings_.mount, pending.scan, pending.sensor);
+  pending.source = dds_io::sourceScanOf(msg);
   pending.arrived = std::chrono::steady_clock::now();
   std::lock_guard lock(mutex_);
   pending_.push_back(std::move(pending));

@@ -16,7 +16,7 @@ namespace scanfilter::ingest {
 struct LiveSettings {
   std::string scan_topic = "scan";  // under rt/<ns>/
   std::string odom_topic = "odom";
-  SensorMount mount;                 // the laser's pose on the robot base
+  dds_io::LaserMount mount;          // the laser's pose on the robot base, upright or upside down
   double max_pose_gap_s = 0.2;       // odometry samples farther than this from the scan stamp: no pose
   double max_pose_wait_s = 0.5;      // how long a scan waits for the odometry after its stamp
   int queue_depth = 50;
@@ -33,7 +33,8 @@ class LiveSource {
              dds_io::ServiceMetrics& metrics);
 
   // Moves every scan that can be posed (or must be dropped) out of the
-  // queue; calls publish(scan, sensor) for the posed ones, in stamp order.
+  // queue; calls publish(scan, sensor, source) for the posed ones, in stamp
+  // order (source: the LaserScan fields rt/scan_filtered gives back).
   template <typename Publish>
   void drain(Publish&& publish);
 
@@ -43,6 +44,7 @@ class LiveSource {
   struct Pending {
     Scan scan;
     SensorInfo sensor;
+    dds_io::SourceScanMsg source;
     std::chrono::steady_clock::time_point arrived;
   };
   void onScan(dds_io::LaserScanMsg& msg);
@@ -69,7 +71,7 @@ void LiveSource::drain(Publish&& publish) {
       Pending ready = std::move(next);
       pending_.pop_front();
       lock.unlock();
-      publish(ready.scan, ready.sensor);
+      publish(ready.scan, ready.sensor, ready.source);
       lock.lock();
       continue;
     }

@@ -55,7 +55,8 @@ IngestSettings readIngestSettings(const ServiceConfigFile& config) {
   std::vector<double> mount = {0.0, 0.0, 0.0};
   live.read("mount", mount);
   if (mount.size() != 3) live.fail("mount", "expected [x, y, yaw]");
-  s.live.mount = {mount[0], mount[1], mount[2]};
+  s.live.mount.pose = {mount[0], mount[1], mount[2]};
+  live.read("upside_down", s.live.mount.upside_down);
   live.read("max_pose_gap_s", s.live.max_pose_gap_s);
   live.read("max_pose_wait_s", s.live.max_pose_wait_s);
   live.read("reliable", s.live.reliable);
@@ -94,9 +95,10 @@ int runLive(DdsParticipant& participant, const ServiceConfigFile& config, const 
   std::uint64_t sequence = 0;
   auto last_stats = std::chrono::steady_clock::now();
   while (!ShutdownSignal::waitFor(kDrainPeriod)) {
-    live.drain([&](const Scan& scan, const SensorInfo& sensor) {
+    live.drain([&](const Scan& scan, const SensorInfo& sensor, const SourceScanMsg& source) {
       const TimeMsg received = wallClockNow();
       toMessage(scan, sensor, sequence++, msg);
+      msg.source_scan(source);
       stampStage(msg, "scan_ingest", received);
       if (writer.write(msg)) metrics.scanPublished();
       else metrics.sampleRejected("write_failed");

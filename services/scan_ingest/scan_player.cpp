@@ -32,14 +32,14 @@ std::uint64_t ScanPlayer::play() {
   dds_io::LabeledScanMsg msg;
   std::uint64_t sequence = 0;
   bool first = true;
-  double first_stamp = 0.0;
+  Stamp first_stamp;
   const auto start = std::chrono::steady_clock::now();
   while (!dds_io::ShutdownSignal::requested() && source_.next(record)) {
     if (first) first_stamp = record.scan.stamp, first = false;
     if (!rate_.as_fast_as_accepted) {
       // Sleep until the scan's recorded time, scaled by the speed.
       const auto due = start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                   std::chrono::duration<double>((record.scan.stamp - first_stamp) / rate_.speed));
+                                   std::chrono::duration<double>(record.scan.stamp.secondsSince(first_stamp) / rate_.speed));
       std::this_thread::sleep_until(due);
     }
     record.scan.labels.clear();  // the filters write labels; a log's old ones are not passed on

@@ -25,7 +25,7 @@ constexpr std::size_t kHugeBeams = 70000;  // above kMaxBeamsOnWire
 
 LabeledScanMsg goodScan(std::uint64_t sequence) {
   Scan scan;
-  scan.stamp = static_cast<double>(sequence);
+  scan.stamp = Stamp::fromNanoseconds(static_cast<std::int64_t>(sequence) * Stamp::kNanosPerSecond);
   scan.angle_increment = 2.0 * std::numbers::pi / kBeams;
   scan.ranges.assign(kBeams, 2.0);
   SensorInfo sensor;

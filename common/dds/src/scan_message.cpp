@@ -20,13 +20,16 @@ double returnOrNaN(double r, const SensorInfo& sensor) {
 }
 }  // namespace
 
-TimeMsg toTimeMsg(double seconds) {
+TimeMsg toTimeMsg(Stamp stamp) {
   TimeMsg t;
-  const double whole = std::floor(seconds);
-  t.sec(static_cast<int32_t>(whole));
-  t.nanosec(static_cast<uint32_t>(std::llround((seconds - whole) * kNanosPerSecond) % 1000000000LL));
+  t.sec(static_cast<int32_t>(stamp.sec()));
+  t.nanosec(stamp.nanosec());
   return t;
 }
+
+Stamp toStamp(const TimeMsg& t) { return Stamp::fromSecNanosec(t.sec(), t.nanosec()); }
+
+bool isValidTime(const TimeMsg& t) { return t.nanosec() < static_cast<std::uint32_t>(Stamp::kNanosPerSecond); }
 
 double toSeconds(const TimeMsg& t) { return t.sec() + t.nanosec() / kNanosPerSecond; }
 
@@ -55,16 +58,19 @@ void toMessage(const Scan& scan, const SensorInfo& sensor, std::uint64_t sequenc
   out.angle_increment(scan.angle_increment);
   out.range_min(sensor.range_min);
   out.range_max(sensor.range_max);
-  out.ranges().assign(scan.ranges.begin(), scan.ranges.end());
+  const auto recorded = scan.rangesAsRecorded();
+  out.ranges().assign(recorded.begin(), recorded.end());
   out.intensities().assign(scan.intensities.begin(), scan.intensities.end());
   out.labels().assign(scan.labels.begin(), scan.labels.end());
   out.timing().clear();
+  out.source_scan(SourceScanMsg{});
 }
 
 std::optional<std::string> rejectionReason(const LabeledScanMsg& msg) {
   const std::size_t n = msg.ranges().size();
   if (n == 0) return "empty";
   if (n > kMaxBeamsOnWire) return "too_many_beams";
+  if (!isValidTime(msg.header().stamp())) return "bad_stamp";
   if (!msg.intensities().empty() && msg.intensities().size() != n) return "length_mismatch";
   if (!msg.labels().empty() && msg.labels().size() != n) return "length_mismatch";
   if (!std::isfinite(msg.pose_x()) || !std::isfinite(msg.pose_y()) || !std::isfinite(msg.pose_theta()) ||
@@ -84,10 +90,11 @@ void fromMessage(const LabeledScanMsg& msg, Scan& scan, SensorInfo& sensor) {
   sensor.range_min = msg.range_min();
   sensor.range_max = msg.range_max();
   sensor.angular_accuracy_deg = msg.angular_accuracy_deg();
-  scan.stamp = toSeconds(msg.header().stamp());
+  scan.stamp = toStamp(msg.header().stamp());
   scan.pose = {msg.pose_x(), msg.pose_y(), msg.pose_theta()};
   scan.angle_min = msg.angle_min();
   scan.angle_increment = msg.angle_increment();
+  scan.recorded_ranges.assign(msg.ranges().begin(), msg.ranges().end());
   scan.ranges.resize(msg.ranges().size());
   for (std::size_t i = 0; i < scan.ranges.size(); ++i) scan.ranges[i] = returnOrNaN(msg.ranges()[i], sensor);
   scan.intensities.assign(msg.intensities().begin(), msg.intensities().end());
@@ -96,11 +103,25 @@ void fromMessage(const LabeledScanMsg& msg, Scan& scan, SensorInfo& sensor) {
   scan.thin_leg_beams.clear();
 }
 
-void toFilteredLaserScan(const LabeledScanMsg& msg, const std::string& frame_id, LaserScanMsg& out) {
+namespace {
+
+// The frame, angles, times and limits of the LaserScan the scan came in.
+void copySourceFields(const SourceScanMsg& source, LaserScanMsg& out) {
+  out.header().frame_id(source.frame_id());
+  out.angle_min(source.angle_min());
+  out.angle_max(source.angle_max());
+  out.angle_increment(source.angle_increment());
+  out.time_increment(source.time_increment());
+  out.scan_time(source.scan_time());
+  out.range_min(source.range_min());
+  out.range_max(source.range_max());
+}
+
+// A log's scan has no LaserScan of its own: ROS angles grow counter-clockwise,
+// so a clockwise sensor's beam at angle a is at -a.
+void deriveLogFields(const LabeledScanMsg& msg, const std::string& frame_id, LaserScanMsg& out) {
   const std::size_t n = msg.ranges().size();
-  // ROS angles grow counter-clockwise; a clockwise sensor's beam at angle a is at -a.
   const double sign = msg.clockwise() ? -1.0 : 1.0;
-  out.header().stamp(msg.header().stamp());
   out.header().frame_id(frame_id);
   out.angle_min(static_cast<float>(sign * msg.angle_min()));
   out.angle_increment(static_cast<float>(sign * msg.angle_increment()));
@@ -109,24 +130,55 @@ void toFilteredLaserScan(const LabeledScanMsg& msg, const std::string& frame_id,
   out.scan_time(0.0f);
   out.range_min(static_cast<float>(msg.range_min()));
   out.range_max(static_cast<float>(msg.range_max()));
+}
+
+}  // namespace
+
+void toFilteredLaserScan(const LabeledScanMsg& msg, const std::string& frame_id, RemovedBeamValue removed,
+                         LaserScanMsg& out) {
+  const std::size_t n = msg.ranges().size();
+  out.header().stamp(msg.header().stamp());
+  if (msg.source_scan().present()) copySourceFields(msg.source_scan(), out);
+  else deriveLogFields(msg, frame_id, out);
+  const float removed_value = removed == RemovedBeamValue::kNaN ? std::numeric_limits<float>::quiet_NaN()
+                                                                : std::numeric_limits<float>::infinity();
   out.ranges().resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const auto code = msg.labels().empty() ? PointCode::kValid : static_cast<PointCode>(msg.labels()[i]);
-    const bool removed = code == PointCode::kJump || code == PointCode::kMisdetected;
-    out.ranges()[i] = removed ? std::numeric_limits<float>::infinity() : static_cast<float>(msg.ranges()[i]);
+    const bool is_removed = code == PointCode::kJump || code == PointCode::kMisdetected;
+    // A float that came in as a LaserScan range went to double exactly and
+    // comes back exactly.
+    out.ranges()[i] = is_removed ? removed_value : static_cast<float>(msg.ranges()[i]);
   }
   out.intensities().assign(msg.intensities().begin(), msg.intensities().end());
 }
 
-void fromLaserScan(const LaserScanMsg& msg, const SensorMount& mount, Scan& scan, SensorInfo& sensor) {
-  sensor.mount = mount;
-  sensor.direction = BeamDirection::kCcw;
+SourceScanMsg sourceScanOf(const LaserScanMsg& msg) {
+  SourceScanMsg source;
+  source.present(true);
+  source.frame_id(msg.header().frame_id());
+  source.angle_min(msg.angle_min());
+  source.angle_max(msg.angle_max());
+  source.angle_increment(msg.angle_increment());
+  source.time_increment(msg.time_increment());
+  source.scan_time(msg.scan_time());
+  source.range_min(msg.range_min());
+  source.range_max(msg.range_max());
+  return source;
+}
+
+void fromLaserScan(const LaserScanMsg& msg, const LaserMount& mount, Scan& scan, SensorInfo& sensor) {
+  sensor.mount = mount.pose;
+  // Upside down, the sensor's counter-clockwise sweep is clockwise about the
+  // base's z axis: the angles stay as the sensor gives them.
+  sensor.direction = mount.upside_down ? BeamDirection::kCw : BeamDirection::kCcw;
   sensor.range_min = msg.range_min();
   sensor.range_max = msg.range_max();
   sensor.angular_accuracy_deg = std::abs(msg.angle_increment()) * 180.0 / std::numbers::pi;
-  scan.stamp = toSeconds(msg.header().stamp());
+  scan.stamp = toStamp(msg.header().stamp());
   scan.angle_min = msg.angle_min();
   scan.angle_increment = msg.angle_increment();
+  scan.recorded_ranges.assign(msg.ranges().begin(), msg.ranges().end());
   scan.ranges.resize(msg.ranges().size());
   for (std::size_t i = 0; i < scan.ranges.size(); ++i) scan.ranges[i] = returnOrNaN(msg.ranges()[i], sensor);
   scan.intensities.assign(msg.intensities().begin(), msg.intensities().end());

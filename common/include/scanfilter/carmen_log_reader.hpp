@@ -5,6 +5,7 @@
 
 #include "scanfilter/line_reader.hpp"
 #include "scanfilter/scan_source.hpp"
+#include "scanfilter/stamp_order.hpp"
 
 namespace scanfilter {
 
@@ -26,13 +27,14 @@ class CarmenLogReader final : public ScanSource {
 
   // Scans whose stamp is earlier than the one before. Real logs have them
   // (intel: line 5647); file order is kept as the sequence and they are counted.
-  std::size_t stampRegressions() const { return stamp_regressions_; }
+  std::size_t stampRegressions() const override { return stamp_order_.regressions(); }
 
  private:
   bool readScanLine(std::string& line);
   void parseFlaser(const std::vector<std::string>& tokens, Scan& scan) const;
   void parseRobotLaser(const std::vector<std::string>& tokens, Scan& scan) const;
   double number(const std::vector<std::string>& tokens, std::size_t index, const char* field) const;
+  Stamp stamp(const std::vector<std::string>& tokens, std::size_t index) const;
   void setRanges(const std::vector<std::string>& tokens, std::size_t first, std::size_t count,
                  Scan& scan) const;
   [[noreturn]] void fail(const std::string& field, const std::string& problem) const;
@@ -42,8 +44,7 @@ class CarmenLogReader final : public ScanSource {
   std::optional<std::string> pending_;  // first scan line, read to learn the header
   std::size_t pending_line_ = 0;
   std::size_t current_line_ = 0;
-  double last_stamp_ = -1.0;
-  std::size_t stamp_regressions_ = 0;
+  StampOrder stamp_order_;
 };
 
 }  // namespace scanfilter

@@ -4,6 +4,7 @@
 
 #include "scanfilter/line_reader.hpp"
 #include "scanfilter/scan_source.hpp"
+#include "scanfilter/stamp_order.hpp"
 
 namespace scanfilter {
 
@@ -38,6 +39,7 @@ class MinesLogReader final : public ScanSource {
 
   const ScanLogHeader& header() const override { return header_; }
   bool next(ScanRecord& record) override;
+  std::size_t stampRegressions() const override { return stamp_order_.regressions(); }
 
   // True when a line looks like a Mines log line (707 fields, integer first).
   static bool looksLikeMinesLine(const std::string& line);
@@ -47,6 +49,7 @@ class MinesLogReader final : public ScanSource {
   void integrateOdometry(long long left_ticks, long long right_ticks);
 
   LineReader lines_;
+  StampOrder stamp_order_;
   MinesRobotModel model_;
   ScanLogHeader header_;
   Pose2 pose_;

@@ -79,15 +79,15 @@ class PenetrationFilter {
 
  private:
   struct CachedFrame {
-    double stamp;
+    Stamp stamp;
     std::vector<Eigen::Vector2d> points;  // vote in grid_
     std::vector<Eigen::Vector2d> others;  // the other returns, in evidence_ only
   };
   void rescuePersistentPoints(std::span<std::uint8_t> labels);
   int evidenceAround(const Eigen::Vector2d& p) const;
-  void resetOnPoseJump(const Eigen::Vector2d& origin, double stamp);
-  void expireFrames(double stamp);
-  void cacheFrame(double stamp, std::span<const std::uint8_t> labels);
+  void resetOnPoseJump(const Eigen::Vector2d& origin, Stamp stamp);
+  void expireFrames(Stamp stamp);
+  void cacheFrame(Stamp stamp, std::span<const std::uint8_t> labels);
 
   std::deque<CachedFrame> cache_;
   BeamDirectionTable directions_;

@@ -15,22 +15,22 @@ class PoseBuffer {
   explicit PoseBuffer(double max_gap, double keep_seconds) : max_gap_(max_gap), keep_(keep_seconds) {}
 
   // Adds a sample; samples must come in stamp order (older ones are ignored).
-  bool add(double stamp, const Pose2& pose);
+  bool add(Stamp stamp, const Pose2& pose);
 
   // The pose at `stamp`, or nothing when the samples around it are missing
   // or farther than max_gap.
-  std::optional<Pose2> at(double stamp) const;
+  std::optional<Pose2> at(Stamp stamp) const;
 
   // True when a later sample may still arrive that would pose `stamp`: none
   // has arrived yet, or the newest is older than it. (Odometry and scans come
   // on separate streams; the first scan often arrives before any odometry.)
-  bool mayStillPose(double stamp) const { return samples_.empty() || samples_.back().stamp < stamp; }
+  bool mayStillPose(Stamp stamp) const { return samples_.empty() || samples_.back().stamp < stamp; }
 
   std::size_t size() const { return samples_.size(); }
 
  private:
   struct Sample {
-    double stamp;
+    Stamp stamp;
     Pose2 pose;
   };
   double max_gap_;

@@ -5,6 +5,7 @@
 
 #include "scanfilter/line_reader.hpp"
 #include "scanfilter/scan_source.hpp"
+#include "scanfilter/stamp_order.hpp"
 
 namespace scanfilter {
 
@@ -16,6 +17,7 @@ class ScanLogReader final : public ScanSource {
 
   const ScanLogHeader& header() const override { return header_; }
   bool next(ScanRecord& record) override;
+  std::size_t stampRegressions() const override { return stamp_order_.regressions(); }
 
   // Upper bound on a believable range (m): larger values are corrupt data,
   // not "out of range", and are rejected.
@@ -25,12 +27,11 @@ class ScanLogReader final : public ScanSource {
 
  private:
   void parseHeader();
-  void parseScan(const nlohmann::ordered_json& object, Scan& scan);
+  void parseScan(const nlohmann::ordered_json& object, std::string_view stamp_text, Scan& scan);
 
   LineReader lines_;
   ScanLogHeader header_;
-  double last_stamp_ = 0.0;
-  bool have_stamp_ = false;
+  StampOrder stamp_order_;
 };
 
 }  // namespace scanfilter

@@ -20,8 +20,11 @@ class ScanLogWriter {
   std::ofstream out_;
 };
 
-// JSON of a header line and of a scan line (used by the writer and tests).
+// JSON of a header line (used by the writer and tests).
 nlohmann::ordered_json headerToJson(const ScanLogHeader& header);
-nlohmann::ordered_json scanToJson(const Scan& scan);
+// A scan line: the record's original line (every key kept) with its labels,
+// or the scan serialised. The stamp is written from its integer nanoseconds
+// (nlohmann's numbers are doubles), so it reads back the same.
+std::string scanLine(const ScanRecord& record);
 
 }  // namespace scanfilter

@@ -24,6 +24,9 @@ class ScanSource {
   virtual const ScanLogHeader& header() const = 0;
   // Next scan; false at the end. Throws InputError on bad input.
   virtual bool next(ScanRecord& record) = 0;
+  // Scans so far whose stamp is earlier than the one before (kept in file
+  // order, warned about once).
+  virtual std::size_t stampRegressions() const { return 0; }
 };
 
 // Options for logs whose header does not say everything.

@@ -145,7 +145,7 @@ bool ScanSimulator::next(ScanRecord& record) {
   record = ScanRecord{};
   Scan& scan = record.scan;
   const int beams = scene_.lidar.beams;
-  scan.stamp = static_cast<double>(frame_) / scene_.lidar.rate_hz;
+  scan.stamp = Stamp::fromSeconds(static_cast<double>(frame_) / scene_.lidar.rate_hz);
   scan.pose = poses_[frame_++];
   scan.angle_min = 0.0;
   scan.angle_increment = 2.0 * std::numbers::pi / beams;
