@@ -7,10 +7,15 @@
  *
  * The scene: the robot in the middle of a round room of radius 2 m; in each
  * scan one beam, a different one each time as a mixed return would be,
- * returns a lone point at 3.5 m: the jump filter must remove it, and
- * rt/scan_filtered must carry +inf there (REP 117). Last, it reads rt/map
- * (transient local) and checks the round room in it: size, resolution, a
- * wall cell occupied and a cell inside free. */
+ * returns a lone point at 3.5 m: the jump filter must remove it. Each scan
+ * also carries every kind of beam a driver sends (REP 117): +inf (no return),
+ * NaN (an error), 0, readings below range_min and above range_max, and a
+ * stamp that a double cannot hold. What must come back on rt/scan_filtered:
+ * the stamp, frame_id, angles, times and limits exactly as sent, every beam
+ * that rt/labeled_scan did not mark removed bit-identical to what was sent,
+ * and NaN on every removed beam. Last, it reads rt/map (transient local) and
+ * checks the round room in it: size, resolution, a wall cell occupied and a
+ * cell inside free. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -28,6 +33,23 @@
 #define PUBLISH_PERIOD DDS_MSECS(20)
 #define MATCH_TIMEOUT DDS_SECS(20)
 #define RECEIVE_TIMEOUT DDS_SECS(30)
+#define MAX_SCANS 400
+/* 1.7e9 s: a double resolves only about 240 ns there. */
+#define FIRST_SEC 1732000000
+#define SCANS_PER_SEC 10
+#define NANOSEC_PER_SCAN 100000000u
+#define ODD_NANOSECONDS 700001u /* plus k: no two stamps round to the same double nicely */
+#define FRAME_ID "laser_front"
+#define REMOVED_AT_MOST 4 /* per scan: the spike and at most a neighbour or two */
+
+/* Beams with a fixed kind in every scan (REP 117). */
+#define BEAM_INF 10
+#define BEAM_NAN 20
+#define BEAM_ZERO 30
+#define BEAM_BELOW_MIN 40
+#define BEAM_ABOVE_MAX 50
+#define RANGE_MIN 0.15f
+#define RANGE_MAX 6.0f
 
 static int wait_matched(dds_entity_t writer, const char *name) {
   dds_time_t deadline = dds_time() + MATCH_TIMEOUT;
@@ -42,9 +64,30 @@ static int wait_matched(dds_entity_t writer, const char *name) {
 }
 
 static int spike_beam(int k) { return (SPIKE_FIRST_BEAM + SPIKE_STEP * k) % BEAMS; }
-static int frame_of(const struct builtin_interfaces_msg_dds__Time_ *t) {
-  return (t->sec - 100) * 10 + (int)(t->nanosec / 100000000u);
+static struct builtin_interfaces_msg_dds__Time_ stamp_of(int k) {
+  struct builtin_interfaces_msg_dds__Time_ t;
+  t.sec = FIRST_SEC + k / SCANS_PER_SEC;
+  t.nanosec = (uint32_t)(k % SCANS_PER_SEC) * NANOSEC_PER_SCAN + ODD_NANOSECONDS + (uint32_t)k;
+  return t;
 }
+/* The scan a stamp belongs to, or -1 when no scan was sent with exactly it. */
+static int frame_of(const struct builtin_interfaces_msg_dds__Time_ *t) {
+  const int k = (t->sec - FIRST_SEC) * SCANS_PER_SEC + (int)(t->nanosec / NANOSEC_PER_SCAN);
+  if (k < 0 || k >= MAX_SCANS) return -1;
+  const struct builtin_interfaces_msg_dds__Time_ sent = stamp_of(k);
+  return sent.sec == t->sec && sent.nanosec == t->nanosec ? k : -1;
+}
+static float sent_range(int k, int beam) {
+  switch (beam) {
+    case BEAM_INF: return INFINITY;
+    case BEAM_NAN: return NAN;
+    case BEAM_ZERO: return 0.0f;
+    case BEAM_BELOW_MIN: return 0.5f * RANGE_MIN;
+    case BEAM_ABOVE_MAX: return RANGE_MAX + 1.5f;
+    default: return beam == spike_beam(k) ? SPIKE_RANGE : ROOM_RADIUS;
+  }
+}
+static int same_bits(float a, float b) { return memcmp(&a, &b, sizeof a) == 0; }
 
 static int wait_subscribed(dds_entity_t reader, const char *name) {
   dds_time_t deadline = dds_time() + MATCH_TIMEOUT;
@@ -58,20 +101,60 @@ static int wait_subscribed(dds_entity_t reader, const char *name) {
   return 0;
 }
 
+/* The fields a consumer gets back exactly: angles, times and limits. */
+static void fill_fields(sensor_msgs_msg_dds__LaserScan_ *scan) {
+  scan->angle_min = -3.1415925f;
+  scan->angle_increment = (float)(2.0 * M_PI / BEAMS);
+  scan->angle_max = scan->angle_min + scan->angle_increment * (BEAMS - 1);
+  scan->time_increment = 1.0f / (10.0f * BEAMS);
+  scan->scan_time = 0.1f;
+  scan->range_min = RANGE_MIN;
+  scan->range_max = RANGE_MAX;
+}
+
 static void fill_scan(sensor_msgs_msg_dds__LaserScan_ *scan, float *ranges, int k) {
   memset(scan, 0, sizeof *scan);
-  scan->header.stamp.sec = 100 + k / 10;
-  scan->header.stamp.nanosec = (uint32_t)(k % 10) * 100000000u;
-  scan->header.frame_id = "laser";
-  scan->angle_min = 0.0f;
-  scan->angle_increment = (float)(2.0 * M_PI / BEAMS);
-  scan->angle_max = scan->angle_increment * (BEAMS - 1);
-  scan->range_min = 0.15f;
-  scan->range_max = 6.0f;
-  for (int i = 0; i < BEAMS; ++i) ranges[i] = i == spike_beam(k) ? SPIKE_RANGE : ROOM_RADIUS;
+  scan->header.stamp = stamp_of(k);
+  scan->header.frame_id = FRAME_ID;
+  fill_fields(scan);
+  for (int i = 0; i < BEAMS; ++i) ranges[i] = sent_range(k, i);
   scan->ranges._buffer = ranges;
   scan->ranges._length = scan->ranges._maximum = BEAMS;
   scan->ranges._release = false;
+}
+
+static int same_fields(const sensor_msgs_msg_dds__LaserScan_ *s) {
+  sensor_msgs_msg_dds__LaserScan_ sent;
+  fill_fields(&sent);
+  const int same = strcmp(s->header.frame_id, FRAME_ID) == 0 && same_bits(s->angle_min, sent.angle_min) &&
+                   same_bits(s->angle_max, sent.angle_max) && same_bits(s->angle_increment, sent.angle_increment) &&
+                   same_bits(s->time_increment, sent.time_increment) && same_bits(s->scan_time, sent.scan_time) &&
+                   same_bits(s->range_min, sent.range_min) && same_bits(s->range_max, sent.range_max);
+  if (!same)
+    fprintf(stderr, "cyclone_peer: rt/scan_filtered frame_id '%s', angles %.9g %.9g %.9g, times %.9g %.9g, limits %.9g %.9g: not as sent\n",
+            s->header.frame_id, s->angle_min, s->angle_max, s->angle_increment, s->time_increment, s->scan_time,
+            s->range_min, s->range_max);
+  return same;
+}
+
+/* REP 117: a removed beam is NaN, every other beam exactly what was sent. */
+static int check_beams(int k, const float *out, const unsigned char *label) {
+  int removed = 0;
+  for (int i = 0; i < BEAMS; ++i) {
+    const int is_removed = label[i] == 1 || label[i] == 2;
+    removed += is_removed;
+    const int right = is_removed ? isnan(out[i]) : same_bits(out[i], sent_range(k, i));
+    if (!right) {
+      fprintf(stderr, "cyclone_peer: scan %d beam %d (label %d): sent %.9g, got %.9g\n", k, i, label[i],
+              sent_range(k, i), out[i]);
+      return 1;
+    }
+  }
+  if (removed > REMOVED_AT_MOST) {
+    fprintf(stderr, "cyclone_peer: scan %d: %d beams removed from a round room, expected the spike only\n", k, removed);
+    return 1;
+  }
+  return 0;
 }
 
 int main(int argc, char **argv) {
@@ -81,6 +164,10 @@ int main(int argc, char **argv) {
   }
   const dds_domainid_t domain = (dds_domainid_t)atoi(argv[1]);
   const int scans = atoi(argv[2]);
+  if (scans < 1 || scans > MAX_SCANS) {
+    fprintf(stderr, "cyclone_peer: SCANS must be 1-%d\n", MAX_SCANS);
+    return 2;
+  }
   dds_entity_t pp = dds_create_participant(domain, NULL, NULL);
   if (pp < 0) {
     fprintf(stderr, "cyclone_peer: no participant: %s\n", dds_strretcode(-pp));
@@ -116,8 +203,7 @@ int main(int argc, char **argv) {
   for (int k = 0; k <= scans; ++k) {
     nav_msgs_msg_dds__Odometry_ odom;
     memset(&odom, 0, sizeof odom);
-    odom.header.stamp.sec = 100 + k / 10;
-    odom.header.stamp.nanosec = (uint32_t)(k % 10) * 100000000u;
+    odom.header.stamp = stamp_of(k);
     odom.header.frame_id = "odom";
     odom.child_frame_id = "base_link";
     odom.pose.pose.orientation.w = 1.0;
@@ -130,6 +216,10 @@ int main(int argc, char **argv) {
     dds_sleepfor(PUBLISH_PERIOD);
   }
 
+  /* Filtered ranges and labels by scan, compared once both have come. */
+  static float filtered[MAX_SCANS][BEAMS];
+  static unsigned char labels[MAX_SCANS][BEAMS];
+  static int have_filtered[MAX_SCANS], have_labels[MAX_SCANS];
   int got_filtered = 0, got_labeled = 0, bad = 0;
   const dds_time_t deadline = dds_time() + RECEIVE_TIMEOUT;
   while ((got_filtered < scans || got_labeled < scans) && dds_time() < deadline) {
@@ -139,10 +229,17 @@ int main(int argc, char **argv) {
       if (info[0].valid_data) {
         const sensor_msgs_msg_dds__LaserScan_ *s = samples[0];
         ++got_filtered;
-        const int spike = spike_beam(frame_of(&s->header.stamp));
-        if (s->ranges._length != BEAMS || !isinf(s->ranges._buffer[spike]) ||
-            fabsf(s->ranges._buffer[(spike + 1) % BEAMS] - ROOM_RADIUS) > 1e-6f)
+        const int k = frame_of(&s->header.stamp);
+        if (k < 0) {
+          fprintf(stderr, "cyclone_peer: rt/scan_filtered stamp %d.%09u was never sent\n", s->header.stamp.sec,
+                  s->header.stamp.nanosec);
           ++bad;
+        } else if (!same_fields(s) || s->ranges._length != BEAMS) {
+          ++bad;
+        } else {
+          memcpy(filtered[k], s->ranges._buffer, sizeof filtered[k]);
+          have_filtered[k] = 1;
+        }
       }
       dds_return_loan(r_filtered, samples, 1);
       continue;
@@ -152,15 +249,22 @@ int main(int argc, char **argv) {
       if (info[0].valid_data) {
         const scanfilter_msgs_msg_dds__LabeledScan_ *s = samples[0];
         ++got_labeled;
-        const int spike = spike_beam(frame_of(&s->header.stamp));
-        if (s->labels._length != BEAMS || s->labels._buffer[spike] != 1 || s->labels._buffer[(spike + 1) % BEAMS] != 0)
+        const int k = frame_of(&s->header.stamp);
+        if (k < 0 || s->labels._length != BEAMS || s->labels._buffer[spike_beam(k)] != 1) {
+          fprintf(stderr, "cyclone_peer: rt/labeled_scan scan %d: wrong stamp or spike not removed\n", k);
           ++bad;
+        } else {
+          memcpy(labels[k], s->labels._buffer, BEAMS);
+          have_labels[k] = 1;
+        }
       }
       dds_return_loan(r_labeled, samples, 1);
       continue;
     }
     dds_sleepfor(DDS_MSECS(10));
   }
+  for (int k = 0; k < scans; ++k)
+    if (have_filtered[k] && have_labels[k]) bad += check_beams(k, filtered[k], labels[k]);
   /* The map of the round room: the newest sample once every scan is in. */
   int map_ok = 0;
   const dds_time_t map_deadline = dds_time() + DDS_SECS(10);
@@ -188,7 +292,10 @@ int main(int argc, char **argv) {
     }
   }
   dds_delete(pp);
-  printf("cyclone_peer: sent %d scans; got %d on rt/scan_filtered, %d on rt/labeled_scan, %d wrong; map %s\n", scans,
-         got_filtered, got_labeled, bad, map_ok ? "right" : "WRONG or missing");
-  return got_filtered == scans && got_labeled == scans && bad == 0 && map_ok ? 0 : 1;
+  int compared = 0;
+  for (int k = 0; k < scans; ++k) compared += have_filtered[k] && have_labels[k];
+  printf("cyclone_peer: sent %d scans; got %d on rt/scan_filtered, %d on rt/labeled_scan, %d compared beam by beam "
+         "(stamps, frame, angles exact; kept beams bit-identical; removed NaN), %d wrong; map %s\n",
+         scans, got_filtered, got_labeled, compared, bad, map_ok ? "right" : "WRONG or missing");
+  return got_filtered == scans && got_labeled == scans && compared == scans && bad == 0 && map_ok ? 0 : 1;
 }
