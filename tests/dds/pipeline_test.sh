@@ -4,7 +4,7 @@
 # domain id with the loopback-only profile.
 #
 #   pipeline_test.sh BUILD_DIR SOURCE_DIR CASE
-#   CASE: labels | metrics | prometheus | live | cyclone | bad_samples | map | config
+#   CASE: labels | metrics | prometheus | live | cyclone | bad_samples | map | config | launcher
 set -euo pipefail
 BUILD="$1" SRC="$2" CASE="$3"
 if [ -z "${SCANFILTER_IN_NETNS:-}" ] && [ "$(id -u)" = 0 ] && unshare -n true 2>/dev/null; then
@@ -292,6 +292,37 @@ config)
     [ "$code" -ne 0 ] || fail "$svc accepted a broken config"
     grep -q "service.queue_depht: unknown key" <<<"$out" || fail "$svc did not name the bad key: $out"
   done
+  ;;
+launcher)
+  # deploy/run-pipeline.sh (what scripts/demo.sh runs) starts the ingest as
+  # soon as the stages downstream are matched - seconds, not its 30 s timeout -
+  # exits 0, and records every scan with the offline replay's labels.
+  LAUNCH=100
+  "$SF" simulate --scene hall --seed 4 --max-frames $LAUNCH -o "$WORK/launch_in.scanlog.jsonl" > /dev/null
+  "$SF" replay "$WORK/launch_in.scanlog.jsonl" --config "$SRC/config/filter.yaml" -o "$WORK/launch_offline.scanlog.jsonl" -q
+  launched_ms=$(date +%s%3N)
+  set +e
+  out=$(BUILD_DIR="$BUILD" timeout -k 10 120 bash "$SRC/deploy/run-pipeline.sh" --log "$WORK/launch_in.scanlog.jsonl" \
+          --rate max --out "$WORK/launch" --domain "$DOMAIN" 2>&1)
+  code=$?
+  set -e
+  echo "$out"
+  [ "$code" = 0 ] || fail "run-pipeline.sh exited with $code"
+  # Its own account: every stage matched, and how long that took.
+  grep -q "^stages matched: waited [0-9.]* s" <<<"$out" || fail "run-pipeline.sh did not report the stages matched"
+  waited=$(sed -n 's/^stages matched: waited \([0-9]*\)\.[0-9] s.*/\1/p' <<<"$out")
+  [ -n "$waited" ] && [ "$waited" -lt 5 ] || fail "run-pipeline.sh waited ${waited:-?} s for the stages to match"
+  # The ingest's own start time (its first log line), independent of that.
+  first=$(sed -n '1s/^\[\([0-9-]* [0-9:.]*\)\] \[scan_ingest\] \[info\] started:.*/\1/p' "$WORK/launch/scan_ingest.log")
+  [ -n "$first" ] || fail "no start line in scan_ingest.log"
+  started_after_ms=$(( $(date -d "$first" +%s%3N) - launched_ms ))
+  echo "scan_ingest started ${started_after_ms} ms after the launch"
+  [ "$started_after_ms" -lt 8000 ] || fail "scan_ingest started ${started_after_ms} ms after the launch"
+  info=$("$SF" info "$WORK/launch/pipeline.labeled.scanlog.jsonl")
+  grep -q "^scans: *$LAUNCH " <<<"$info" && grep -q "labels: $LAUNCH scans" <<<"$info" ||
+    fail "the labelled output is not $LAUNCH labelled scans: $info"
+  "$SF" diff "$WORK/launch_offline.scanlog.jsonl" "$WORK/launch/pipeline.labeled.scanlog.jsonl" ||
+    fail "the launcher's labels differ from the offline replay"
   ;;
 *) echo "unknown case $CASE"; exit 2 ;;
 esac
