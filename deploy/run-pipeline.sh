@@ -51,8 +51,13 @@ declare -A PID_OF
 stop_all() {
   for pid in "${PIDS[@]}"; do kill -TERM "$pid" 2>/dev/null || true; done
   for pid in "${PIDS[@]}"; do wait "$pid" 2>/dev/null || true; done
+  PIDS=()
 }
-trap 'stop_all; exit 130' INT TERM
+# Whatever ends this script (the end, an error, Ctrl-C, a closed pipe on its
+# output) stops what it started.
+trap stop_all EXIT
+trap 'exit 130' INT TERM HUP
+trap 'exit 141' PIPE
 
 started() {  # name: remembers the PID of the process just started in the background
   PID_OF[$1]=$!
