@@ -6,10 +6,14 @@
 # saves the map).
 #
 #   deploy/run-pipeline.sh [--scene hall | --log FILE] [--rate recorded|max|FACTOR] [--out DIR] [--domain N]
+#
+# The source starts once the stages downstream are matched, or after
+# MATCH_TIMEOUT_S (default 30) seconds, saying what is missing.
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 BIN="${BUILD_DIR:-$ROOT/build}"
 SCENE=hall LOG="" RATE=recorded OUT="$ROOT/out" DOMAIN=0
+MATCH_TIMEOUT_S=${MATCH_TIMEOUT_S:-30}
 while [ $# -gt 0 ]; do
   case "$1" in
     --scene) SCENE="$2"; shift 2 ;;
@@ -17,10 +21,11 @@ while [ $# -gt 0 ]; do
     --rate) RATE="$2"; shift 2 ;;
     --out) OUT="$2"; shift 2 ;;
     --domain) DOMAIN="$2"; shift 2 ;;
-    -h|--help) sed -n 2,8p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,11p "$0"; exit 0 ;;
     *) echo "unknown argument: $1 (see --help)" >&2; exit 2 ;;
   esac
 done
+[[ "$MATCH_TIMEOUT_S" =~ ^[0-9]+$ ]] || { echo "MATCH_TIMEOUT_S: whole seconds expected, got $MATCH_TIMEOUT_S" >&2; exit 2; }
 mkdir -p "$OUT"
 OUT="$(cd "$OUT" && pwd)"  # absolute: the configs written below are read from $OUT
 # The ingest's source, written as a config next to the output.
@@ -32,6 +37,9 @@ INGEST_CFG="$OUT/scan_ingest.yaml"
   else
     echo "source: {kind: simulator, scene: $SCENE, rate: $RATE}"
   fi
+  # rt/posed_scan has one reader, the jump_filter; by the time the ingest
+  # starts below it has normally matched it already.
+  echo "playback: {wait_for_subscribers: 1, wait_timeout_s: 30, exit_at_end: true}"
 } > "$INGEST_CFG"
 
 MAP_CFG="$OUT/map_publisher.yaml"
@@ -39,38 +47,113 @@ echo "service: {domain_id: $DOMAIN, profiles_file: $ROOT/deploy/fastdds-loopback
 echo "publishing: {save_path: $OUT/map}" >> "$MAP_CFG"
 
 PIDS=()
+declare -A PID_OF
 stop_all() {
   for pid in "${PIDS[@]}"; do kill -TERM "$pid" 2>/dev/null || true; done
   for pid in "${PIDS[@]}"; do wait "$pid" 2>/dev/null || true; done
+  PIDS=()
 }
-trap 'stop_all; exit 130' INT TERM
+# Whatever ends this script (the end, an error, Ctrl-C, a closed pipe on its
+# output) stops what it started.
+trap stop_all EXIT
+trap 'exit 130' INT TERM HUP
+trap 'exit 141' PIPE
 
-"$BIN/services/map_publisher" --config "$MAP_CFG" > "$OUT/map_publisher.log" 2>&1 & PIDS+=($!)
-"$BIN/services/penetration_filter" --domain "$DOMAIN" > "$OUT/penetration_filter.log" 2>&1 & PIDS+=($!)
-"$BIN/services/jump_filter" --domain "$DOMAIN" > "$OUT/jump_filter.log" 2>&1 & PIDS+=($!)
+started() {  # name: remembers the PID of the process just started in the background
+  PID_OF[$1]=$!
+  PIDS+=($!)
+}
+"$BIN/services/map_publisher" --config "$MAP_CFG" > "$OUT/map_publisher.log" 2>&1 & started map_publisher
+"$BIN/services/penetration_filter" --domain "$DOMAIN" > "$OUT/penetration_filter.log" 2>&1 & started penetration_filter
+"$BIN/services/jump_filter" --domain "$DOMAIN" > "$OUT/jump_filter.log" 2>&1 & started jump_filter
 "$BIN/tools/scan_recorder" --domain "$DOMAIN" --idle-exit 2 -o "$OUT/pipeline.labeled.scanlog.jsonl" \
-  > "$OUT/scan_recorder.log" 2>&1 & RECORDER=$!
-PIDS+=($RECORDER)
+  > "$OUT/scan_recorder.log" 2>&1 & started scan_recorder
 
-# Start the source only once every stage downstream is matched (each
-# service's matched-endpoints gauge), so that no stage misses the first scans.
-matched() {  # port topic: the service's matched readers on that topic's writer
-  curl -s "http://127.0.0.1:$1/metrics" | grep '^scanfilter_dds_matched{' | grep 'endpoint="writer"' |
-    grep -F "topic=\"$2\"" | awk '{print int($2)}'
+# Start the source only once every stage downstream is matched, so that no
+# stage misses the first scans. Each need: the service whose metrics endpoint
+# (port) has the gauge scanfilter_dds_matched (updated every second), its
+# endpoint and topic, how many peers it needs, and who those peers are. Both
+# ends of a hop where both have metrics: discovery is asymmetric, and a scan
+# sent before the reader has matched the writer is lost.
+NEEDS=(
+  "9472 jump_filter writer rt/jump_filtered_scan 1 penetration_filter"
+  "9473 penetration_filter reader rt/jump_filtered_scan 1 jump_filter"
+  "9473 penetration_filter writer rt/labeled_scan 2 map_publisher,scan_recorder"
+  "9474 map_publisher reader rt/labeled_scan 1 penetration_filter"
+)
+matched() {  # port endpoint topic: that gauge's value; empty if the service's metrics do not answer (yet)
+  local page
+  page=$(curl -s --max-time 1 "http://127.0.0.1:$1/metrics") || return 0  # captured: no `curl | grep` under pipefail
+  awk -v ep="endpoint=\"$2\"" -v topic="topic=\"$3\"" \
+    'index($0, "scanfilter_dds_matched{") == 1 && index($0, ep) && index($0, topic) { print int($2) }' <<<"$page"
 }
-for _ in $(seq 1 300); do
-  [ "$(matched 9472 rt/jump_filtered_scan)" = 1 ] && [ "$(matched 9473 rt/labeled_scan)" = 1 ] && break
+running() {  # name: whether that process is still running
+  kill -0 "${PID_OF[$1]}" 2>/dev/null
+}
+logs_of() {  # comma-separated names: their log files
+  local name logs=""
+  for name in ${1//,/ }; do logs+="${logs:+, }$OUT/$name.log"; done
+  echo "$logs"
+}
+what_is_missing() {  # prints one line per unmet need; nothing once all are met
+  local line port svc endpoint topic need peers n peer_kind peer
+  for line in "${NEEDS[@]}"; do
+    read -r port svc endpoint topic need peers <<<"$line"
+    peer_kind=readers
+    [ "$endpoint" = writer ] || peer_kind=writers
+    n=$(matched "$port" "$endpoint" "$topic")
+    if ! running "$svc"; then
+      echo "$svc exited (see $OUT/$svc.log)"
+    elif [ -z "$n" ]; then
+      echo "no metrics from $svc on :$port yet (see $OUT/$svc.log)"
+    elif [ "$n" -lt "$need" ]; then
+      echo "$topic: $svc's $endpoint has $n of $need $peer_kind matched (${peers//,/ and }; see $(logs_of "$peers"))"
+    fi
+  done
+  for peer in map_publisher scan_recorder; do
+    running "$peer" || echo "$peer exited (see $OUT/$peer.log)"
+  done
+}
+wait_start=$(date +%s%N)
+deadline=$(( wait_start + MATCH_TIMEOUT_S * 1000000000 ))
+while :; do
+  missing=$(what_is_missing | awk '!seen[$0]++')
+  [ -z "$missing" ] && break
+  if [[ "$missing" == *" exited (see "* ]]; then  # it will not match any more
+    missing=$(grep -F " exited (see " <<<"$missing")
+    break
+  fi
+  [ "$(date +%s%N)" -lt "$deadline" ] || break
   sleep 0.1
 done
-"$BIN/services/scan_ingest" --config "$INGEST_CFG" > "$OUT/scan_ingest.log" 2>&1 & INGEST=$!
-PIDS+=($INGEST)
+waited_ms=$(( ($(date +%s%N) - wait_start) / 1000000 ))
+waited="$(( waited_ms / 1000 )).$(( waited_ms % 1000 / 100 ))"
+if [ -z "$missing" ]; then
+  echo "stages matched: waited $waited s (rt/jump_filtered_scan: penetration_filter; rt/labeled_scan: map_publisher and scan_recorder); starting scan_ingest"
+else
+  echo "WARNING: waited $waited s (MATCH_TIMEOUT_S=$MATCH_TIMEOUT_S) and still missing:"
+  sed 's/^/  - /' <<<"$missing"
+  echo "starting scan_ingest anyway: a stage not matched yet misses the first scans"
+fi
+"$BIN/services/scan_ingest" --config "$INGEST_CFG" > "$OUT/scan_ingest.log" 2>&1 & started scan_ingest
+INGEST=${PID_OF[scan_ingest]}
 
 echo "pipeline running on DDS domain $DOMAIN (localhost only); logs in $OUT/"
 echo "metrics: http://127.0.0.1:9471/metrics (scan_ingest), :9472 (jump_filter), :9473 (penetration_filter), :9474 (map_publisher)"
 echo "topics:  rt/posed_scan -> rt/jump_filtered_scan -> rt/labeled_scan and rt/scan_filtered (sensor_msgs/LaserScan) -> rt/map"
 status=0
 wait "$INGEST" || status=$?
-wait "$RECORDER" || true  # it exits 2 s after the last scan arrived
+if [ "$status" = 0 ]; then
+  # The recorder exits 2 s after the last scan arrived; the scans still in
+  # the filters' queues take well under a second at any rate.
+  for _ in $(seq 1 300); do
+    running scan_recorder || break
+    sleep 0.1
+  done
+  if running scan_recorder; then
+    echo "WARNING: scan_recorder still running 30 s after scan_ingest ended; stopping it (see $OUT/scan_recorder.log)"
+  fi
+fi
 stop_all
 echo "scan_ingest exited with $status; labelled output: $OUT/pipeline.labeled.scanlog.jsonl; map: $OUT/map.png (+ .pgm/.yaml)"
 exit "$status"

@@ -18,7 +18,10 @@ PACKAGES=(
 
 missing=()
 for p in "${PACKAGES[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  # Captured first: under pipefail, `dpkg-query | grep -q` can fail when grep
+  # exits before dpkg-query has written everything (SIGPIPE).
+  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null) || true
+  grep -q "install ok installed" <<<"$status" || missing+=("$p")
 done
 
 if [ ${#missing[@]} -eq 0 ]; then

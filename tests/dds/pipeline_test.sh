@@ -4,7 +4,7 @@
 # domain id with the loopback-only profile.
 #
 #   pipeline_test.sh BUILD_DIR SOURCE_DIR CASE
-#   CASE: labels | metrics | prometheus | live | upside_down | cyclone | bad_samples | map | config
+#   CASE: labels | metrics | prometheus | live | upside_down | cyclone | bad_samples | map | config | launcher
 set -euo pipefail
 BUILD="$1" SRC="$2" CASE="$3"
 if [ -z "${SCANFILTER_IN_NETNS:-}" ] && [ "$(id -u)" = 0 ] && unshare -n true 2>/dev/null; then
@@ -18,12 +18,26 @@ cleanup() {
   rm -rf "$WORK"
 }
 trap cleanup EXIT
-fail() { echo "FAIL: $*"; for f in "$WORK"/*.log; do echo "--- $f"; tail -n 20 "$f"; done; exit 1; }
+fail() {
+  echo "FAIL: $*"
+  for f in "$WORK"/*.log "$WORK"/*/*.log; do
+    if [ -f "$f" ]; then echo "--- $f"; tail -n 20 "$f"; fi
+  done
+  exit 1
+}
 SF="$BUILD/tools/scanfilter"
 FRAMES=300
 
+# Output is captured before it is searched: under pipefail, `curl | grep -q`
+# fails at random (grep exits at the first match, curl gets SIGPIPE).
+scrape() {  # port: the service's metrics page, empty if it does not answer
+  curl -s --max-time 2 "http://127.0.0.1:$1/metrics" || true
+}
+
 metric() {  # port name-and-labels-regex: prints the value
-  { curl -s "http://127.0.0.1:$1/metrics" | grep -E "^$2 " | awk '{print int($2)}'; } || true
+  local page
+  page=$(scrape "$1")
+  { grep -E "^$2 " <<<"$page" | awk '{print int($2)}'; } || true
 }
 
 start_filters() {
@@ -46,8 +60,8 @@ start_pipeline() {  # scans the recorder waits for: filters and recorder up and 
   "$BUILD/tools/scan_recorder" --domain "$DOMAIN" --count "$1" --timeout 60 -o "$WORK/live.scanlog.jsonl" \
     > "$WORK/recorder.log" 2>&1 &
   REC=$!; PIDS+=($REC)
-  wait_matched 19472 rt/jump_filtered_scan
-  wait_matched 19473 rt/labeled_scan
+  wait_jump_to_penetration
+  wait_matched 19473 writer rt/labeled_scan  # the recorder (no metrics of its own)
 }
 
 run_ingest() {  # log file
@@ -55,9 +69,8 @@ run_ingest() {  # log file
   "$BUILD/services/scan_ingest" --config "$WORK/ingest.yaml" > "$WORK/ingest.log" 2>&1 || fail "scan_ingest exited non-zero"
 }
 
-prom_query() {  # PromQL: prints "value" of each series, one per line
-  curl -s "http://127.0.0.1:19090/api/v1/query" --data-urlencode "query=$1" |
-    grep -o '"value":\[[^]]*\]' | sed 's/.*,"\(.*\)"\]/\1/' || true
+prom_api() {  # PromQL: the query API's JSON reply, empty if Prometheus does not answer
+  curl -s --max-time 5 "http://127.0.0.1:19090/api/v1/query" --data-urlencode "query=$1" || true
 }
 
 # The live run's recorded scans (exactly what the ingest published: float32
@@ -68,14 +81,35 @@ live_equals_offline_replay() {
     fail "live labels differ from the offline replay of the same scans"
 }
 
-wait_matched() {  # port topic
-  for _ in $(seq 1 200); do
-    n=$(curl -s "http://127.0.0.1:$1/metrics" | grep '^scanfilter_dds_matched{' | grep 'endpoint="writer"' |
-        grep -F "topic=\"$2\"" | awk '{print int($2)}' || true)
+prom_query() {  # PromQL: prints "value" of each series, one per line
+  local reply
+  reply=$(prom_api "$1")
+  { grep -o '"value":\[[^]]*\]' <<<"$reply" | sed 's/.*,"\(.*\)"\]/\1/'; } || true
+}
+
+matched() {  # port endpoint topic: the service's gauge of peers matched by that endpoint (updated every second)
+  local page
+  page=$(scrape "$1")
+  awk -v ep="endpoint=\"$2\"" -v topic="topic=\"$3\"" \
+    'index($0, "scanfilter_dds_matched{") == 1 && index($0, ep) && index($0, topic) {print int($2)}' <<<"$page"
+}
+
+wait_matched() {  # port endpoint topic: until that endpoint has matched a peer; 20 s at most
+  local deadline=$((SECONDS + 20)) n
+  while :; do
+    n=$(matched "$1" "$2" "$3")
     [ "${n:-0}" -ge 1 ] && return 0
+    [ "$SECONDS" -lt "$deadline" ] || fail "the $2 of $3 on :$1 matched nothing within 20 s (gauge: ${n:-absent})"
     sleep 0.1
   done
-  fail "no reader matched $2 on :$1"
+}
+
+# Discovery is asymmetric: a writer may see its reader matched before the
+# reader has matched the writer, and a volatile sample sent in between is
+# lost. Where both ends export the gauge, wait for both.
+wait_jump_to_penetration() {
+  wait_matched 19472 writer rt/jump_filtered_scan
+  wait_matched 19473 reader rt/jump_filtered_scan
 }
 
 "$SF" simulate --scene hall --seed 4 --max-frames $FRAMES -o "$WORK/in.scanlog.jsonl" > /dev/null
@@ -96,10 +130,18 @@ metrics)
   wait "$REC" || fail "recorder did not get $FRAMES scans"
   for svc in jump_filter:19472 penetration_filter:19473; do
     name=${svc%%:*} port=${svc##*:}
-    got=$(metric "$port" "scanfilter_scans_received_total\\{service=\"$name\"\\}")
-    pub=$(metric "$port" "scanfilter_scans_published_total\\{service=\"$name\"\\}")
-    [ "$got" = $FRAMES ] && [ "$pub" = $FRAMES ] || fail "$name counted received=$got published=$pub, expected $FRAMES"
-    curl -s "http://127.0.0.1:$port/metrics" | grep -q "^scanfilter_processing_seconds_bucket{service=\"$name\",le=\"1e-05\"}" ||
+    # A scan is counted as published once write() returned, which can be just
+    # after the next process got it: give the counters (at most) 5 s to settle.
+    deadline=$((SECONDS + 5))
+    while :; do
+      got=$(metric "$port" "scanfilter_scans_received_total\\{service=\"$name\"\\}")
+      pub=$(metric "$port" "scanfilter_scans_published_total\\{service=\"$name\"\\}")
+      [ "$got" = $FRAMES ] && [ "$pub" = $FRAMES ] && break
+      [ "$SECONDS" -lt "$deadline" ] || fail "$name counted received=$got published=$pub, expected $FRAMES"
+      sleep 0.1
+    done
+    page=$(scrape "$port")
+    grep -q "^scanfilter_processing_seconds_bucket{service=\"$name\",le=\"1e-05\"}" <<<"$page" ||
       fail "$name has no processing histogram"
   done
   # The removed-points counters equal the labels that came out (step 2's
@@ -129,12 +171,13 @@ prometheus)
     --storage.tsdb.path="$WORK/tsdb" > "$WORK/prometheus.log" 2>&1 &
   PROM=$!; PIDS+=($PROM)
   start_filters
-  wait_matched 19472 rt/jump_filtered_scan
+  wait_jump_to_penetration
   ingest_config "$WORK/in.scanlog.jsonl" false
   "$BUILD/services/scan_ingest" --config "$WORK/ingest.yaml" > "$WORK/ingest.log" 2>&1 &
   INGEST=$!; PIDS+=($INGEST)
   ok=""
-  for _ in $(seq 1 300); do
+  deadline=$((SECONDS + 40))
+  while [ "$SECONDS" -lt "$deadline" ]; do
     up=$(prom_query 'sum(up{job="scanfilter"})')
     published=$(prom_query 'scanfilter_scans_published_total{service="penetration_filter"}')
     [ "$up" = 3 ] && [ "$published" = $FRAMES ] && ok=1 && break
@@ -147,8 +190,8 @@ prometheus)
   grep -o '"expr": "[^"]*"' "$SRC/deploy/grafana-dashboard.json" | sed 's/"expr": "\(.*\)"/\1/' > "$WORK/exprs"
   [ -s "$WORK/exprs" ] || fail "no queries found in deploy/grafana-dashboard.json"
   while read -r expr; do
-    curl -s "http://127.0.0.1:19090/api/v1/query" --data-urlencode "query=$expr" | grep -q '"status":"success"' ||
-      fail "dashboard query rejected by Prometheus: $expr"
+    reply=$(prom_api "$expr")
+    grep -q '"status":"success"' <<<"$reply" || fail "dashboard query rejected by Prometheus: $expr: $reply"
   done < "$WORK/exprs"
   for pid in $INGEST $PEN $JUMP; do kill -TERM "$pid"; wait "$pid" || fail "service $pid exited non-zero"; done
   kill -TERM "$PROM"; wait "$PROM" || true
@@ -168,7 +211,7 @@ YAML
   INGEST=$!; PIDS+=($INGEST)
   "$BUILD/tools/ros_scan_publisher" --domain "$DOMAIN" --rate 50 --reliable "$WORK/live_in.scanlog.jsonl" > "$WORK/publisher.log" 2>&1 ||
     fail "ros_scan_publisher failed"
-  wait "$REC" || fail "recorder did not get $LIVE scans; ingest: $(curl -s http://127.0.0.1:19471/metrics | grep -E '^scanfilter_(scans|samples)' | tr '\n' ' ')"
+  wait "$REC" || fail "recorder did not get $LIVE scans; ingest: $(scrape 19471 | grep -E '^scanfilter_(scans|samples)' | tr '\n' ' ')"
   kill -TERM "$INGEST"; wait "$INGEST" || fail "scan_ingest exited non-zero"
   path_in=$("$SF" info "$WORK/live_in.scanlog.jsonl" | sed -n 's/.*path \([0-9.]*\) m/\1/p')
   path_out=$("$SF" info "$WORK/live.scanlog.jsonl" | sed -n 's/.*path \([0-9.]*\) m/\1/p')
@@ -222,7 +265,7 @@ YAML
     "$DOMAIN" "$SRC/deploy/fastdds-loopback.xml" > "$WORK/map.yaml"
   "$BUILD/services/map_publisher" --config "$WORK/map.yaml" > "$WORK/map.log" 2>&1 &
   PIDS+=($!)
-  wait_matched 19472 rt/jump_filtered_scan
+  wait_jump_to_penetration
   "$BUILD/services/scan_ingest" --config "$WORK/ingest.yaml" > "$WORK/ingest.log" 2>&1 &
   INGEST=$!; PIDS+=($INGEST)
   "$BUILD/tests/cyclone_peer" "$DOMAIN" 50 > "$WORK/cyclone.log" 2>&1 || fail "the Cyclone DDS peer did not get what the pipeline sends"
@@ -254,11 +297,15 @@ publishing: {rate_hz: 5, save_path: $WORK/live_map, save_period_s: 1000}
 YAML
   "$BUILD/services/map_publisher" --config "$WORK/map.yaml" > "$WORK/map.log" 2>&1 &
   MAP=$!; PIDS+=($MAP)
-  wait_matched 19472 rt/jump_filtered_scan
-  wait_matched 19473 rt/labeled_scan
+  wait_jump_to_penetration
+  wait_matched 19473 writer rt/labeled_scan
+  wait_matched 19474 reader rt/labeled_scan
   run_ingest "$WORK/in.scanlog.jsonl"
-  for _ in $(seq 1 200); do
-    [ "$(metric 19474 'scanfilter_scans_received_total\{service="map_publisher"\}')" = $FRAMES ] && break
+  deadline=$((SECONDS + 20))
+  while :; do
+    mapped=$(metric 19474 'scanfilter_scans_received_total\{service="map_publisher"\}')
+    [ "$mapped" = $FRAMES ] && break
+    [ "$SECONDS" -lt "$deadline" ] || fail "map_publisher received ${mapped:-no} scans of $FRAMES within 20 s"
     sleep 0.1
   done
   sleep 0.5  # one more publishing period after the last scan
@@ -283,8 +330,39 @@ config)
     code=$?
     set -e
     [ "$code" -ne 0 ] || fail "$svc accepted a broken config"
-    echo "$out" | grep -q "service.queue_depht: unknown key" || fail "$svc did not name the bad key: $out"
+    grep -q "service.queue_depht: unknown key" <<<"$out" || fail "$svc did not name the bad key: $out"
   done
+  ;;
+launcher)
+  # deploy/run-pipeline.sh (what scripts/demo.sh runs) starts the ingest as
+  # soon as the stages downstream are matched - seconds, not its 30 s timeout -
+  # exits 0, and records every scan with the offline replay's labels.
+  LAUNCH=100
+  "$SF" simulate --scene hall --seed 4 --max-frames $LAUNCH -o "$WORK/launch_in.scanlog.jsonl" > /dev/null
+  "$SF" replay "$WORK/launch_in.scanlog.jsonl" --config "$SRC/config/filter.yaml" -o "$WORK/launch_offline.scanlog.jsonl" -q
+  launched_ms=$(date +%s%3N)
+  set +e
+  out=$(BUILD_DIR="$BUILD" timeout -k 10 120 bash "$SRC/deploy/run-pipeline.sh" --log "$WORK/launch_in.scanlog.jsonl" \
+          --rate max --out "$WORK/launch" --domain "$DOMAIN" 2>&1)
+  code=$?
+  set -e
+  echo "$out"
+  [ "$code" = 0 ] || fail "run-pipeline.sh exited with $code"
+  # Its own account: every stage matched, and how long that took.
+  grep -q "^stages matched: waited [0-9.]* s" <<<"$out" || fail "run-pipeline.sh did not report the stages matched"
+  waited=$(sed -n 's/^stages matched: waited \([0-9]*\)\.[0-9] s.*/\1/p' <<<"$out")
+  [ -n "$waited" ] && [ "$waited" -lt 5 ] || fail "run-pipeline.sh waited ${waited:-?} s for the stages to match"
+  # The ingest's own start time (its first log line), independent of that.
+  first=$(sed -n '1s/^\[\([0-9-]* [0-9:.]*\)\] \[scan_ingest\] \[info\] started:.*/\1/p' "$WORK/launch/scan_ingest.log")
+  [ -n "$first" ] || fail "no start line in scan_ingest.log"
+  started_after_ms=$(( $(date -d "$first" +%s%3N) - launched_ms ))
+  echo "scan_ingest started ${started_after_ms} ms after the launch"
+  [ "$started_after_ms" -lt 8000 ] || fail "scan_ingest started ${started_after_ms} ms after the launch"
+  info=$("$SF" info "$WORK/launch/pipeline.labeled.scanlog.jsonl")
+  grep -q "^scans: *$LAUNCH " <<<"$info" && grep -q "labels: $LAUNCH scans" <<<"$info" ||
+    fail "the labelled output is not $LAUNCH labelled scans: $info"
+  "$SF" diff "$WORK/launch_offline.scanlog.jsonl" "$WORK/launch/pipeline.labeled.scanlog.jsonl" ||
+    fail "the launcher's labels differ from the offline replay"
   ;;
 *) echo "unknown case $CASE"; exit 2 ;;
 esac
