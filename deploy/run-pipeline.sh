@@ -66,7 +66,7 @@ started() {  # name: remembers the PID of the process just started in the backgr
 "$BIN/services/map_publisher" --config "$MAP_CFG" > "$OUT/map_publisher.log" 2>&1 & started map_publisher
 "$BIN/services/penetration_filter" --domain "$DOMAIN" > "$OUT/penetration_filter.log" 2>&1 & started penetration_filter
 "$BIN/services/jump_filter" --domain "$DOMAIN" > "$OUT/jump_filter.log" 2>&1 & started jump_filter
-"$BIN/tools/scan_recorder" --domain "$DOMAIN" --idle-exit 2 -o "$OUT/pipeline.labeled.scanlog.jsonl" \
+"$BIN/dds_tools/scan_recorder" --domain "$DOMAIN" --idle-exit 2 -o "$OUT/pipeline.labeled.scanlog.jsonl" \
   > "$OUT/scan_recorder.log" 2>&1 & started scan_recorder
 
 # Start the source only once every stage downstream is matched, so that no

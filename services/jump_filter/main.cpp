@@ -6,13 +6,10 @@
 #include <spdlog/spdlog.h>
 
 #include "scanfilter/dds/filter_stage.hpp"
-#include "scanfilter/dds/service_cli.hpp"
-#include "scanfilter/dds/shutdown_signal.hpp"
+#include "scanfilter/dds/service_runtime.hpp"
 #include "scanfilter/dds/topic_names.hpp"
 #include "scanfilter/filter_config.hpp"
-#include "scanfilter/input_error.hpp"
 #include "scanfilter/jump_filter.hpp"
-#include "scanfilter/yaml_section.hpp"
 
 using namespace scanfilter;
 using namespace scanfilter::dds_io;
@@ -47,28 +44,14 @@ class JumpStep {
 }  // namespace
 
 int main(int argc, char** argv) {
-  ServiceCli cli("jump_filter", "scanfilter jump_filter: step 1 (jump points) of the two-step LiDAR filter",
-                 "127.0.0.1:9472", {"filter"});
-  if (const auto exit_code = cli.parse(argc, argv)) return *exit_code;
-  const ServiceConfigFile& config = cli.config();
-  return runLogged([&] {
-    const FilterConfig filter = loadStageFilterConfig(config);
-
-    ShutdownSignal::install();
-    ServiceMetrics metrics("jump_filter", config.service.metrics_address, scanfilterVersion());
-    DdsParticipant participant(config.service.participant);
-    const std::string& ns = config.service.topic_namespace;
-    FilterStage stage(participant, config.service, metrics, "jump_filter", rosTopic(ns, kPosedScanTopic),
-                      rosTopic(ns, kJumpFilteredTopic), JumpStep(filter));
-    spdlog::info("started: domain {}, {} -> {}, metrics http://{}/metrics", config.service.participant.domain_id,
-                 rosTopic(ns, kPosedScanTopic), rosTopic(ns, kJumpFilteredTopic), metrics.address());
-    while (!ShutdownSignal::waitFor(std::chrono::seconds(1))) {
-      metrics.updateProcessStats();
-      metrics.matched("reader", rosTopic(ns, kPosedScanTopic), stage.matchedWriters());
-      metrics.matched("writer", rosTopic(ns, kJumpFilteredTopic), stage.matchedReaders());
-    }
+  const ServiceDescription description{"jump_filter",
+                                       "scanfilter jump_filter: step 1 (jump points) of the two-step LiDAR filter",
+                                       "127.0.0.1:9472", {"filter"}};
+  return runService(argc, argv, description, [](ServiceRuntime& runtime) {
+    const FilterConfig filter = loadStageFilterConfig(runtime.config());
+    FilterStage stage(runtime, "jump_filter", kPosedScanTopic, kJumpFilteredTopic, JumpStep(filter));
+    runtime.runUntilStopped();
     spdlog::info("stopping after {} scans", stage.processed());
-    spdlog::info("stopped");
     return 0;
   });
 }

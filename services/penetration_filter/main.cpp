@@ -8,64 +8,63 @@
 #include <spdlog/spdlog.h>
 
 #include "scanfilter/dds/filter_stage.hpp"
-#include "scanfilter/dds/service_cli.hpp"
-#include "scanfilter/dds/shutdown_signal.hpp"
+#include "scanfilter/dds/service_runtime.hpp"
+#include "scanfilter/dds/stream_qos.hpp"
 #include "scanfilter/dds/topic_names.hpp"
 #include "scanfilter/filter_config.hpp"
-#include "scanfilter/input_error.hpp"
 #include "scanfilter/penetration_filter.hpp"
 #include "scanfilter/yaml_section.hpp"
 
 using namespace scanfilter;
 using namespace scanfilter::dds_io;
 
-int main(int argc, char** argv) {
-  ServiceCli cli("penetration_filter",
-                 "scanfilter penetration_filter: step 2 (misdetected points) of the two-step LiDAR filter",
-                 "127.0.0.1:9473", {"filter", "laser_scan"});
-  if (const auto exit_code = cli.parse(argc, argv)) return *exit_code;
-  const ServiceConfigFile& config = cli.config();
-  return runLogged([&] {
-    const FilterConfig filter_config = loadStageFilterConfig(config);
-    YamlSection scan_section(config.root, "laser_scan", config.path);
-    std::string frame_id = "laser";
-    scan_section.read("frame_id", frame_id);
-    std::string removed_beams = "nan";
-    scan_section.readChoice("removed_beams", removed_beams, {"nan", "inf"});
-    const RemovedBeamValue removed = removed_beams == "nan" ? RemovedBeamValue::kNaN : RemovedBeamValue::kInfinity;
-    scan_section.rejectUnknownKeys();
+namespace {
 
-    ShutdownSignal::install();
-    ServiceMetrics metrics("penetration_filter", config.service.metrics_address, scanfilterVersion());
-    DdsParticipant participant(config.service.participant);
-    const std::string& ns = config.service.topic_namespace;
+// rt/<ns>/scan_filtered: the frame for scans from a log, and what a removed beam becomes.
+struct LaserScanSettings {
+  std::string frame_id = "laser";
+  RemovedBeamValue removed = RemovedBeamValue::kNaN;
+};
+
+LaserScanSettings readLaserScanSettings(const ServiceConfigFile& config) {
+  LaserScanSettings s;
+  YamlSection section(config.root, "laser_scan", config.path);
+  section.read("frame_id", s.frame_id);
+  std::string removed_beams = "nan";
+  section.readChoice("removed_beams", removed_beams, {"nan", "inf"});
+  s.removed = removed_beams == "nan" ? RemovedBeamValue::kNaN : RemovedBeamValue::kInfinity;
+  section.rejectUnknownKeys();
+  return s;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const ServiceDescription description{
+      "penetration_filter", "scanfilter penetration_filter: step 2 (misdetected points) of the two-step LiDAR filter",
+      "127.0.0.1:9473", {"filter", "laser_scan"}};
+  return runService(argc, argv, description, [](ServiceRuntime& runtime) {
+    const FilterConfig filter_config = loadStageFilterConfig(runtime.config());
+    const LaserScanSettings laser_settings = readLaserScanSettings(runtime.config());
     // Step 2's parameters have no `auto` values: one filter, whatever the sensor.
     auto filter = makePenetrationFilter(filter_config.params.penetration, Implementation::kFast);
     const bool enabled = filter_config.params.penetration_enabled;
-    TypedWriter<sensor_msgs::msg::dds_::LaserScan_PubSubType> laser_writer(
-        participant, rosTopic(ns, kFilteredLaserScanTopic), rosDefaultWriterQos());
+    const std::string laser_topic = runtime.topic(kFilteredLaserScanTopic);
+    TypedWriter<sensor_msgs::msg::dds_::LaserScan_PubSubType> laser_writer(runtime.participant(), laser_topic,
+                                                                          rosDefaultWriterQos());
+    runtime.reportMatched("writer", laser_topic, [&] { return laser_writer.matchedReaders(); });
     LaserScanMsg laser;
     FilterStage stage(
-        participant, config.service, metrics, "penetration_filter", rosTopic(ns, kJumpFilteredTopic),
-        rosTopic(ns, kLabeledScanTopic),
+        runtime, "penetration_filter", kJumpFilteredTopic, kLabeledScanTopic,
         [&](const Scan& scan, const SensorInfo& sensor, std::span<std::uint8_t> labels) {
           if (enabled) filter->apply(scan, sensor, labels);
         },
         [&](const LabeledScanMsg& msg) {
-          toFilteredLaserScan(msg, frame_id, removed, laser);
+          toFilteredLaserScan(msg, laser_settings.frame_id, laser_settings.removed, laser);
           laser_writer.write(laser);
         });
-    spdlog::info("started: domain {}, {} -> {} and {}, metrics http://{}/metrics",
-                 config.service.participant.domain_id, rosTopic(ns, kJumpFilteredTopic),
-                 rosTopic(ns, kLabeledScanTopic), rosTopic(ns, kFilteredLaserScanTopic), metrics.address());
-    while (!ShutdownSignal::waitFor(std::chrono::seconds(1))) {
-      metrics.updateProcessStats();
-      metrics.matched("reader", rosTopic(ns, kJumpFilteredTopic), stage.matchedWriters());
-      metrics.matched("writer", rosTopic(ns, kLabeledScanTopic), stage.matchedReaders());
-      metrics.matched("writer", rosTopic(ns, kFilteredLaserScanTopic), laser_writer.matchedReaders());
-    }
+    runtime.runUntilStopped();
     spdlog::info("stopping after {} scans ({} penetration cache resets)", stage.processed(), filter->resetCount());
-    spdlog::info("stopped");
     return 0;
   });
 }

@@ -8,7 +8,7 @@
 
 #include "live_source.hpp"
 #include "scan_player.hpp"
-#include "scanfilter/dds/service_cli.hpp"
+#include "scanfilter/dds/service_runtime.hpp"
 #include "scanfilter/dds/shutdown_signal.hpp"
 #include "scanfilter/dds/stream_qos.hpp"
 #include "scanfilter/dds/topic_names.hpp"
@@ -77,24 +77,25 @@ std::unique_ptr<ScanSource> openSource(const IngestSettings& s) {
   return std::make_unique<sim::ScanSimulator>(sim::findScene(s.scene), s.seed);
 }
 
+// Until the downstream readers matched (and discovery settled), so that no
+// stage misses the first scans; false on timeout or a stop signal.
 bool waitForSubscribers(const ingest::ScanPlayer::Writer& writer, const IngestSettings& s) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(s.wait_timeout_s);
   while (writer.matchedReaders() < s.wait_for_subscribers) {
     if (ShutdownSignal::waitFor(std::chrono::milliseconds(50)) || std::chrono::steady_clock::now() > deadline)
       return false;
   }
-  return true;
+  return s.wait_for_subscribers == 0 || !ShutdownSignal::waitFor(kDiscoverySettle);
 }
 
 // Live: pose each scan from the driver's odometry and publish it until stopped.
-int runLive(DdsParticipant& participant, const ServiceConfigFile& config, const IngestSettings& settings,
-            ingest::ScanPlayer::Writer& writer, ServiceMetrics& metrics) {
+int runLive(ServiceRuntime& runtime, const IngestSettings& settings, ingest::ScanPlayer::Writer& writer) {
   constexpr auto kDrainPeriod = std::chrono::milliseconds(5);
-  ingest::LiveSource live(participant, config.service.topic_namespace, settings.live, metrics);
+  ServiceMetrics& metrics = runtime.metrics();
+  ingest::LiveSource live(runtime.participant(), runtime.settings().topic_namespace, settings.live, metrics);
   LabeledScanMsg msg;
   std::uint64_t sequence = 0;
-  auto last_stats = std::chrono::steady_clock::now();
-  while (!ShutdownSignal::waitFor(kDrainPeriod)) {
+  runtime.runUntilStopped(kDrainPeriod, [&] {
     live.drain([&](const Scan& scan, const SensorInfo& sensor, const SourceScanMsg& source) {
       const TimeMsg received = wallClockNow();
       toMessage(scan, sensor, sequence++, msg);
@@ -103,51 +104,48 @@ int runLive(DdsParticipant& participant, const ServiceConfigFile& config, const 
       if (writer.write(msg)) metrics.scanPublished();
       else metrics.sampleRejected("write_failed");
     });
-    if (std::chrono::steady_clock::now() - last_stats > std::chrono::seconds(1)) {
-      metrics.updateProcessStats();
-      metrics.matched("writer", rosTopic(config.service.topic_namespace, kPosedScanTopic), writer.matchedReaders());
-      last_stats = std::chrono::steady_clock::now();
-    }
-  }
+  });
   spdlog::info("published {} live scans, dropped {} without a pose", sequence, live.dropped());
+  return 0;
+}
+
+// A log or the simulator: publish every scan, then (unless exit_at_end) keep
+// the metrics current until stopped.
+int runPlayback(ServiceRuntime& runtime, const IngestSettings& settings, ScanSource& source,
+                ingest::ScanPlayer::Writer& writer) {
+  runtime.logStarted();
+  ingest::ScanPlayer player(source, writer, runtime.metrics(), settings.rate);
+  const std::uint64_t published = player.play();
+  writer.waitForAcknowledgments(runtime.settings().stream.max_blocking_s);
+  spdlog::info("published {} scans", published);
+  runtime.refreshGauges();
+  if (!settings.exit_at_end) runtime.runUntilStopped();
   return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  ServiceCli cli("scan_ingest", "scanfilter scan_ingest: replays a scan log or CARMEN log, or simulates a scene",
-                 "127.0.0.1:9471", {"source", "live", "playback"});
-  if (const auto exit_code = cli.parse(argc, argv)) return *exit_code;
-  const ServiceConfigFile& config = cli.config();
-  return runLogged([&] {
-    const IngestSettings settings = readIngestSettings(config);
+  const ServiceDescription description{
+      "scan_ingest", "scanfilter scan_ingest: replays a scan log or CARMEN log, or simulates a scene",
+      "127.0.0.1:9471", {"source", "live", "playback"}};
+  return runService(argc, argv, description, [](ServiceRuntime& runtime) {
+    const IngestSettings settings = readIngestSettings(runtime.config());
     auto source = settings.kind == "live" ? nullptr : openSource(settings);
-    ShutdownSignal::install();
-    ServiceMetrics metrics("scan_ingest", config.service.metrics_address, scanfilterVersion());
-    DdsParticipant participant(config.service.participant);
-    const std::string topic = rosTopic(config.service.topic_namespace, kPosedScanTopic);
-    ingest::ScanPlayer::Writer writer(participant, topic, losslessWriterQos(config.service.stream));
-    writer.setFlowControl(flowControlWindow(config.service.stream), config.service.stream.max_blocking_s);
-    spdlog::info("started: domain {}, {} source -> {}, metrics http://{}/metrics",
-                 config.service.participant.domain_id, settings.kind, topic, metrics.address());
+    const std::string topic = runtime.topic(kPosedScanTopic);
+    const StreamQos& stream = runtime.settings().stream;
+    ingest::ScanPlayer::Writer writer(runtime.participant(), topic, losslessWriterQos(stream));
+    writer.setFlowControl(flowControlWindow(stream), stream.max_blocking_s);
+    runtime.reportMatched("writer", topic, [&] { return writer.matchedReaders(); });
+    spdlog::info("{} source; waiting for {} reader(s) of {}", settings.kind, settings.wait_for_subscribers, topic);
     if (!waitForSubscribers(writer, settings)) {
       if (ShutdownSignal::requested()) return 0;
       spdlog::error("{} of {} subscribers matched within {} s; is the jump_filter running on domain {}?",
                     writer.matchedReaders(), settings.wait_for_subscribers, settings.wait_timeout_s,
-                    config.service.participant.domain_id);
+                    runtime.settings().participant.domain_id);
       return 1;
     }
-    if (settings.kind == "live") return runLive(participant, config, settings, writer, metrics);
-    ingest::ScanPlayer player(*source, writer, metrics, settings.rate);
-    const std::uint64_t published = player.play();
-    writer.waitForAcknowledgments(config.service.stream.max_blocking_s);
-    spdlog::info("published {} scans", published);
-    metrics.matched("writer", topic, writer.matchedReaders());
-    while (!settings.exit_at_end && !ShutdownSignal::waitFor(std::chrono::seconds(1))) {
-      metrics.updateProcessStats();
-      metrics.matched("writer", topic, writer.matchedReaders());
-    }
-    return 0;
+    if (settings.kind == "live") return runLive(runtime, settings, writer);
+    return runPlayback(runtime, settings, *source, writer);
   });
 }

@@ -57,7 +57,7 @@ YAML
 
 start_pipeline() {  # scans the recorder waits for: filters and recorder up and matched
   start_filters
-  "$BUILD/tools/scan_recorder" --domain "$DOMAIN" --count "$1" --timeout 60 -o "$WORK/live.scanlog.jsonl" \
+  "$BUILD/dds_tools/scan_recorder" --domain "$DOMAIN" --count "$1" --timeout 60 -o "$WORK/live.scanlog.jsonl" \
     > "$WORK/recorder.log" 2>&1 &
   REC=$!; PIDS+=($REC)
   wait_jump_to_penetration
@@ -209,7 +209,7 @@ YAML
   start_pipeline $LIVE
   "$BUILD/services/scan_ingest" --config "$WORK/ingest.yaml" > "$WORK/ingest.log" 2>&1 &
   INGEST=$!; PIDS+=($INGEST)
-  "$BUILD/tools/ros_scan_publisher" --domain "$DOMAIN" --rate 50 --reliable "$WORK/live_in.scanlog.jsonl" > "$WORK/publisher.log" 2>&1 ||
+  "$BUILD/dds_tools/ros_scan_publisher" --domain "$DOMAIN" --rate 50 --reliable "$WORK/live_in.scanlog.jsonl" > "$WORK/publisher.log" 2>&1 ||
     fail "ros_scan_publisher failed"
   wait "$REC" || fail "recorder did not get $LIVE scans; ingest: $(scrape 19471 | grep -E '^scanfilter_(scans|samples)' | tr '\n' ' ')"
   kill -TERM "$INGEST"; wait "$INGEST" || fail "scan_ingest exited non-zero"
@@ -236,7 +236,7 @@ YAML
   start_pipeline $LIVE
   "$BUILD/services/scan_ingest" --config "$WORK/ingest.yaml" > "$WORK/ingest.log" 2>&1 &
   INGEST=$!; PIDS+=($INGEST)
-  "$BUILD/tools/ros_scan_publisher" --domain "$DOMAIN" --rate 50 --reliable --upside-down \
+  "$BUILD/dds_tools/ros_scan_publisher" --domain "$DOMAIN" --rate 50 --reliable --upside-down \
     "$WORK/live_in.scanlog.jsonl" > "$WORK/publisher.log" 2>&1 || fail "ros_scan_publisher failed"
   wait "$REC" || fail "recorder did not get $LIVE scans"
   kill -TERM "$INGEST"; wait "$INGEST" || fail "scan_ingest exited non-zero"
@@ -353,7 +353,7 @@ launcher)
   waited=$(sed -n 's/^stages matched: waited \([0-9]*\)\.[0-9] s.*/\1/p' <<<"$out")
   [ -n "$waited" ] && [ "$waited" -lt 5 ] || fail "run-pipeline.sh waited ${waited:-?} s for the stages to match"
   # The ingest's own start time (its first log line), independent of that.
-  first=$(sed -n '1s/^\[\([0-9-]* [0-9:.]*\)\] \[scan_ingest\] \[info\] started:.*/\1/p' "$WORK/launch/scan_ingest.log")
+  first=$(sed -n '1s/^\[\([0-9-]* [0-9:.]*\)\] \[scan_ingest\] \[info\] .*/\1/p' "$WORK/launch/scan_ingest.log")
   [ -n "$first" ] || fail "no start line in scan_ingest.log"
   started_after_ms=$(( $(date -d "$first" +%s%3N) - launched_ms ))
   echo "scan_ingest started ${started_after_ms} ms after the launch"

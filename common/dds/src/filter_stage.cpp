@@ -2,21 +2,23 @@
 
 #include <chrono>
 
+#include "scanfilter/dds/stream_qos.hpp"
 #include "scanfilter/point_code.hpp"
 
 namespace scanfilter::dds_io {
 
-FilterStage::FilterStage(DdsParticipant& participant, const ServiceSettings& settings, ServiceMetrics& metrics,
-                         std::string stage, const std::string& input_topic, const std::string& output_topic,
-                         Step step, AfterPublish after_publish)
-    : metrics_(metrics),
+FilterStage::FilterStage(ServiceRuntime& runtime, std::string stage, const std::string& input,
+                         const std::string& output, Step step, AfterPublish after_publish)
+    : metrics_(runtime.metrics()),
       stage_(std::move(stage)),
       step_(std::move(step)),
       after_publish_(std::move(after_publish)),
-      writer_(participant, output_topic, losslessWriterQos(settings.stream)),
-      reader_(participant, input_topic, losslessReaderQos(settings.stream),
+      writer_(runtime.participant(), runtime.topic(output), losslessWriterQos(runtime.settings().stream)),
+      reader_(runtime.participant(), runtime.topic(input), losslessReaderQos(runtime.settings().stream),
               [this](LabeledScanMsg& msg) { onSample(msg); }) {
-  writer_.setFlowControl(flowControlWindow(settings.stream), settings.stream.max_blocking_s);
+  writer_.setFlowControl(flowControlWindow(runtime.settings().stream), runtime.settings().stream.max_blocking_s);
+  runtime.reportMatched("reader", runtime.topic(input), [this] { return reader_.matchedWriters(); });
+  runtime.reportMatched("writer", runtime.topic(output), [this] { return writer_.matchedReaders(); });
 }
 
 void FilterStage::onSample(LabeledScanMsg& msg) {

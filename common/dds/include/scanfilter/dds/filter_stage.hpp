@@ -6,11 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "scanfilter/dds/dds_participant.hpp"
 #include "scanfilter/dds/rate_limited_log.hpp"
 #include "scanfilter/dds/scan_message.hpp"
-#include "scanfilter/dds/service_config.hpp"
-#include "scanfilter/dds/service_metrics.hpp"
+#include "scanfilter/dds/service_runtime.hpp"
 #include "scanfilter/dds/typed_reader.hpp"
 #include "scanfilter/dds/typed_writer.hpp"
 #include "scanfilter_typesPubSubTypes.h"
@@ -27,13 +25,12 @@ class FilterStage {
   // Called after each publish (the penetration filter also sends a LaserScan).
   using AfterPublish = std::function<void(const LabeledScanMsg&)>;
 
-  FilterStage(DdsParticipant& participant, const ServiceSettings& settings, ServiceMetrics& metrics,
-              std::string stage, const std::string& input_topic, const std::string& output_topic, Step step,
-              AfterPublish after_publish = {});
+  // Reads rt/<ns>/<input>, writes rt/<ns>/<output>; both reported to the
+  // runtime's matched-endpoint gauges.
+  FilterStage(ServiceRuntime& runtime, std::string stage, const std::string& input, const std::string& output,
+              Step step, AfterPublish after_publish = {});
 
   std::uint64_t processed() const { return processed_.load(); }
-  int matchedReaders() const { return writer_.matchedReaders(); }
-  int matchedWriters() const { return reader_.matchedWriters(); }
 
  private:
   void onSample(LabeledScanMsg& msg);

@@ -11,6 +11,12 @@
 
 namespace scanfilter::dds_io {
 
+// Discovery is asymmetric: a writer can see a reader matched before the
+// reader has matched the writer, and a sample sent in between is lost even on
+// a reliable stream (the reader starts from the writer's next sample). A
+// source waits this long after its readers matched before its first sample.
+inline constexpr auto kDiscoverySettle = std::chrono::milliseconds(300);
+
 // A DataWriter of one generated type on one topic, counting its matched readers.
 template <typename PubSubType>
 class TypedWriter : private eprosima::fastdds::dds::DataWriterListener {

@@ -24,10 +24,6 @@ using namespace scanfilter::dds_io;
 namespace {
 
 constexpr int kSensorQueueDepth = 10;
-// Discovery is asymmetric: the writer can see the reader matched before the
-// reader has matched the writer, and a volatile sample sent in between is
-// lost even on a reliable stream. A short wait after matching closes that gap.
-constexpr auto kDiscoverySettle = std::chrono::milliseconds(300);
 
 // One more odometry sample this long after the last scan, so it too can be posed.
 constexpr std::int64_t kLastOdometryDelayNs = 1'000'000;
