@@ -43,7 +43,8 @@ void printRow(const char* what, const long (&counts)[kRangeBuckets > kDistanceBu
 
 int main(int argc, char** argv) {
   std::uint64_t seed = 2;
-  CLI::App app{"Where step 1 errs, by scene: missed jump points by distance from the surface, false deletions by range"};
+  CLI::App app{"Where step 1 errs, by scene: missed jump points by distance from the surface, false deletions by "
+               "range"};
   app.add_option("--seed", seed, "simulator seed of the scenes")->capture_default_str()->check(bench::kSeedCheck);
   CLI11_PARSE(app, argc, argv);
 

@@ -71,8 +71,8 @@ void comparisonTable(std::ostream& out, const std::vector<TunedFamily>& tuned, c
       const ParamValues& values = variant == 0 ? tuned[f].defaults : tuned[f].tuned;
       const RemovalScore& s = r.score;
       out << "| " << tuned[f].family->name << (variant == 0 ? " (default)" : " (tuned)") << " | `"
-          << accuracy::describe(*tuned[f].family, values) << "` | " << prf(s, s.jump()) << " | " << prf(s, s.misdetected())
-          << " | " << fmt("%.3f", s.artefactF1()) << " | " << pct(s.falseDeletionRate());
+          << accuracy::describe(*tuned[f].family, values) << "` | " << prf(s, s.jump()) << " | "
+          << prf(s, s.misdetected()) << " | " << fmt("%.3f", s.artefactF1()) << " | " << pct(s.falseDeletionRate());
       for (std::size_t b = 0; b < kRangeBandCount; ++b) out << " | " << pct(s.falseDeletionRate(b));
       out << " | " << fmt("%.1f %%", 100.0 * s.thinLegRetention()) << " | " << fmt("%.0f", r.micros_per_scan) << " |\n";
     }
