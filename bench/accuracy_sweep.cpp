@@ -7,18 +7,21 @@
 //   build/bench/accuracy_sweep [--tune-seed 1] [--test-seeds 2,3] [--frames N] [--skip-stage1 1]
 // --skip-stage1 1 starts stage 2 from the built-in step-1 defaults.
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
-#include <cstdlib>
-#include <string>
 #include <vector>
 
-#include "labelled_logs.hpp"
+#include <CLI/CLI.hpp>
+
+#include "cli_checks.hpp"
+#include "scanfilter/accuracy/filter_score.hpp"
+#include "scanfilter/accuracy/labelled_logs.hpp"
 
 using namespace scanfilter;
 
 namespace {
 
-using bench::LabelledLog;
+using accuracy::LabelledLog;
 
 // Scores of every scene alone; the ranking uses the worst scene, so no
 // scene's strength hides another's weakness.
@@ -32,7 +35,7 @@ SceneScores score(const std::vector<LabelledLog>& logs, const TwoStepFilterParam
   config.params = params;
   SceneScores out;
   for (const auto& log : logs) {
-    out.scenes.push_back(bench::scoreFilter({log}, config));
+    out.scenes.push_back(accuracy::scoreFilter(config, {log}).score);
     out.total.add(out.scenes.back());
   }
   return out;
@@ -68,21 +71,23 @@ int main(int argc, char** argv) {
   std::vector<std::uint64_t> test_seeds = {2, 3};
   int frames = 0;
   bool skip_stage1 = false;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string flag = argv[i];
-    if (flag == "--tune-seed") tune_seed = std::strtoull(argv[i + 1], nullptr, 10);
-    else if (flag == "--skip-stage1") skip_stage1 = std::atoi(argv[i + 1]) != 0;
-    else if (flag == "--frames") frames = std::atoi(argv[i + 1]);
-    else if (flag == "--test-seeds") {
-      test_seeds.clear();
-      for (char* p = argv[i + 1]; *p;) {
-        test_seeds.push_back(std::strtoull(p, &p, 10));
-        if (*p == ',') ++p;
-      }
-    }
-  }
+  CLI::App app{"Parameter sweep of the two-step filter over the built-in scenes (docs/accuracy.md)"};
+  app.add_option("--tune-seed", tune_seed, "simulator seed of the logs the sweep tunes on")
+      ->capture_default_str()
+      ->check(bench::kSeedCheck);
+  app.add_option("--test-seeds", test_seeds, "simulator seeds the best setting is reported on")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(bench::kSeedCheck);
+  app.add_option("--frames", frames, "scans per simulated log (0: whole trajectory)")
+      ->capture_default_str()
+      ->check(bench::kFrameCountCheck);
+  app.add_option("--skip-stage1", skip_stage1, "1: start stage 2 from the built-in step-1 defaults")
+      ->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // progress is visible when redirected
-  const auto tune = bench::simulateAllScenes(tune_seed, frames);
+  const auto tune = accuracy::simulateBuiltinScenes({tune_seed}, frames);
   std::printf("columns: jump P R F1 | misdetected P R F1 | valid falsely deleted | thin legs kept | objective\n");
 
   // Stage 1: step 1 alone, with the rescue that can restore its thin legs.
@@ -146,7 +151,7 @@ int main(int argc, char** argv) {
 
   std::printf("\nbest on the held-out seeds\n");
   for (auto seed : test_seeds) {
-    const auto test = bench::simulateAllScenes(seed, frames);
+    const auto test = accuracy::simulateBuiltinScenes({seed}, frames);
     char tag[64];
     std::snprintf(tag, sizeof tag, "seed %llu", static_cast<unsigned long long>(seed));
     const SceneScores s = score(test, best);

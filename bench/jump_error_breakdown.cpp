@@ -3,11 +3,16 @@
 // jump points by range and by whether a beam without a return lies within two
 // beams (a cluster cut short by the range limit or a dropout).
 //   build/bench/jump_error_breakdown [--seed 2]
+#include <algorithm>
+#include <cstdint>
 #include <cstdio>
-#include <cstdlib>
-#include <string>
+#include <vector>
 
-#include "labelled_logs.hpp"
+#include <CLI/CLI.hpp>
+
+#include "cli_checks.hpp"
+#include "scanfilter/accuracy/filter_score.hpp"
+#include "scanfilter/accuracy/labelled_logs.hpp"
 #include "scanfilter/scan_geometry.hpp"
 #include "scanfilter/sim/ray_caster.hpp"
 
@@ -38,19 +43,23 @@ void printRow(const char* what, const long (&counts)[kRangeBuckets > kDistanceBu
 
 int main(int argc, char** argv) {
   std::uint64_t seed = 2;
-  if (argc == 3 && std::string(argv[1]) == "--seed") seed = std::strtoull(argv[2], nullptr, 10);
+  CLI::App app{"Where step 1 errs, by scene: missed jump points by distance from the surface, false deletions by "
+               "range"};
+  app.add_option("--seed", seed, "simulator seed of the scenes")->capture_default_str()->check(bench::kSeedCheck);
+  CLI11_PARSE(app, argc, argv);
+
   for (const auto& name : sim::builtinSceneNames()) {
     const sim::Scene scene = sim::findScene(name);
     const sim::RayCaster caster(scene);
-    const auto log = bench::simulateScene(name, seed);
-    TwoStepFilter filter(FilterConfig{}.resolve(log.sensor), Implementation::kFast);
+    const auto log = accuracy::simulateScene(name, seed);
+    accuracy::LogLabels log_labels;
+    accuracy::scoreFilter(FilterConfig{}, {log}, &log_labels);
     long missed_by_distance[kRangeBuckets] = {}, deleted_by_range[kRangeBuckets] = {},
          deleted_near_gap_by_range[kRangeBuckets] = {}, found_near_gap_by_range[kRangeBuckets] = {};
-    std::vector<std::uint8_t> labels;
     std::vector<Eigen::Vector2d> points;
-    for (const auto& scan : log.scans) {
-      labels.resize(scan.size());
-      filter.apply(scan, log.sensor, labels);
+    for (std::size_t s = 0; s < log.scans.size(); ++s) {
+      const Scan& scan = log.scans[s];
+      const std::vector<std::uint8_t>& labels = log_labels.front()[s];
       worldPoints(scan, log.sensor, points);
       for (std::size_t i = 0; i < scan.size(); ++i) {
         if (!scan.hasReturn(i)) continue;

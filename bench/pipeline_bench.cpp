@@ -23,6 +23,8 @@
 #include <thread>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "scanfilter/dds/dds_participant.hpp"
 #include "scanfilter/dds/scan_message.hpp"
 #include "scanfilter/dds/stream_qos.hpp"
@@ -155,17 +157,24 @@ void row(const char* what, const std::vector<double>& v) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // The echo child this program spawns of itself (below): not a user's command.
   if (argc >= 3 && std::string(argv[1]) == "--echo") return runEcho(argv[2]);
-  if (argc < 3) {
-    std::fprintf(stderr, "usage: pipeline_bench BUILD_DIR PROFILES_XML [--throughput N] [--latency-scans N]\n");
-    return 2;
-  }
-  const std::string build = argv[1], profiles = argv[2];
+  std::string build, profiles;
   std::size_t throughput_n = 2000, latency_n = 200;
-  for (int i = 3; i + 1 < argc; i += 2) {
-    if (std::string(argv[i]) == "--throughput") throughput_n = std::strtoul(argv[i + 1], nullptr, 10);
-    if (std::string(argv[i]) == "--latency-scans") latency_n = std::strtoul(argv[i + 1], nullptr, 10);
-  }
+  CLI::App app{"The DDS pipeline's throughput and latency against a bare Fast DDS hop (bench/run-pipeline-bench.sh)"};
+  app.add_option("build_dir", build, "build directory holding services/jump_filter and services/penetration_filter")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  app.add_option("profiles_xml", profiles, "Fast DDS profiles (deploy/fastdds-loopback.xml)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  app.add_option("--throughput", throughput_n, "scans sent as fast as the pipeline accepts")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  app.add_option("--latency-scans", latency_n, "scans sent at each rate for the latencies")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  CLI11_PARSE(app, argc, argv);
   const std::string domain = std::to_string(kDomain);
   std::vector<pid_t> children = {
       spawn({build + "/services/jump_filter", "--domain", domain, "--metrics-address", "127.0.0.1:19572", "--log-level", "warn"}),

@@ -1,15 +1,16 @@
-// The accuracy comparison's scoring and tuning sweep.
+// The accuracy harness: scoring, the comparison's filter families and their
+// tuning sweep.
 #include <limits>
 #include <set>
 
 #include <gtest/gtest.h>
 
-#include "accuracy_comparison.hpp"
-#include "comparison_filters.hpp"
+#include "scanfilter/accuracy/comparison_families.hpp"
+#include "scanfilter/accuracy/family_tuning.hpp"
+#include "scanfilter/accuracy/labelled_logs.hpp"
 #include "scanfilter/removal_score.hpp"
-#include "scanfilter/sim/labelled_log.hpp"
 
-namespace scanfilter::cli {
+namespace scanfilter::accuracy {
 namespace {
 
 constexpr auto code(PointCode c) { return static_cast<std::uint8_t>(c); }
@@ -54,9 +55,53 @@ TEST(SweepPoints, DefaultsFirstThenTheRestOfTheGridWithinTheBudget) {
   }
 }
 
+TEST(SimulateBuiltinScenes, EverySceneAtEverySeedSceneBySceneAsTheVariantAsks) {
+  constexpr int kFrames = 3;
+  constexpr int kBeams = 90;
+  SceneVariant coarse;
+  coarse.beams = kBeams;
+  const auto logs = simulateBuiltinScenes({7, 8}, kFrames, coarse);
+  const auto scenes = sim::builtinSceneNames();
+  ASSERT_EQ(logs.size(), 2 * scenes.size());
+  for (std::size_t i = 0; i < logs.size(); ++i) {
+    EXPECT_EQ(logs[i].name, scenes[i / 2] + " seed " + std::to_string(7 + i % 2));
+    ASSERT_EQ(logs[i].scans.size(), static_cast<std::size_t>(kFrames)) << logs[i].name;
+    EXPECT_EQ(logs[i].scans.front().size(), static_cast<std::size_t>(kBeams)) << logs[i].name;
+  }
+}
+
+TEST(SimulateScene, OdometryRewritesThePosesOnlyWhenAsked) {
+  constexpr int kFrames = 20;
+  const auto truth = simulateScene("hall", 1, kFrames);
+  SceneVariant drifting;
+  drifting.odometry = sim::OdometryDrift{0.05, 0.0};
+  const auto odometry = simulateScene("hall", 1, kFrames, drifting);
+  EXPECT_EQ(truth.scans.back().pose.x, simulateScene("hall", 1, kFrames).scans.back().pose.x) << "repeatable";
+  EXPECT_NE(truth.scans.back().pose.x, odometry.scans.back().pose.x);
+  EXPECT_EQ(truth.scans.back().truth, odometry.scans.back().truth) << "the same scans, other poses";
+}
+
+TEST(ScoreFilter, OurConfigScoresAsOurFamilyAtItsDefaults) {
+  const std::vector<LabelledLog> logs = {simulateScene("office", 1, 30), simulateScene("home", 1, 30)};
+  LogLabels labels;
+  const ScoredFilter by_config = scoreFilter(FilterConfig{}, logs, &labels);
+  const FilterFamily ours = comparisonFamilies(FilterConfig{}).front();
+  const ScoredFilter by_family = scoreFamily(ours, sweepPoints(ours, 1).front(), logs);
+  EXPECT_EQ(by_config.scans, 60u);
+  EXPECT_EQ(by_config.scans, by_family.scans);
+  EXPECT_EQ(by_config.score.jump().truth_removed, by_family.score.jump().truth_removed);
+  EXPECT_EQ(by_config.score.misdetected().labelled, by_family.score.misdetected().labelled);
+  EXPECT_EQ(by_config.score.validDeleted(), by_family.score.validDeleted());
+  EXPECT_GT(by_config.score.jump().truth_removed, 0u) << "the logs have artefacts to find";
+  ASSERT_EQ(labels.size(), logs.size());
+  for (std::size_t l = 0; l < logs.size(); ++l) {
+    ASSERT_EQ(labels[l].size(), logs[l].scans.size());
+    EXPECT_EQ(labels[l].back().size(), logs[l].scans.back().size());
+  }
+}
+
 TEST(TuneFamily, SpendsTheBudgetAndNeverEndsBelowTheDefaults) {
-  const auto log = sim::simulateLog(sim::findScene("office"), 1, "office", 40);
-  const std::vector<sim::LabelledLog> logs{log};
+  const std::vector<LabelledLog> logs{simulateScene("office", 1, 40)};
   for (const auto& family : comparisonFamilies(FilterConfig{})) {
     const TunedFamily tuned = tuneFamily(family, logs, 4);
     EXPECT_EQ(tuned.evaluations, 4u) << family.name;
@@ -68,4 +113,4 @@ TEST(TuneFamily, SpendsTheBudgetAndNeverEndsBelowTheDefaults) {
 }
 
 }  // namespace
-}  // namespace scanfilter::cli
+}  // namespace scanfilter::accuracy

@@ -68,7 +68,7 @@ TEST(Geometry, FormatFormulaOnEveryBeam) {
 }
 
 // The paper's robot: sensor C behind the centre, θc = 180°, angles clockwise,
-// is mount [-C, 0, π] with direction cw (algorithm-notes.md).
+// is mount [-C, 0, π] with direction cw (docs/algorithm.md).
 TEST(Geometry, PaperEquation4IsTheSpecialCase) {
   const double c = 0.05;
   SensorInfo sensor;

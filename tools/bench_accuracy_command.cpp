@@ -8,22 +8,34 @@
 #include <iostream>
 #include <sstream>
 
-#include "accuracy_comparison.hpp"
 #include "commands.hpp"
+#include "scanfilter/accuracy/comparison_families.hpp"
+#include "scanfilter/accuracy/family_tuning.hpp"
+#include "scanfilter/accuracy/labelled_logs.hpp"
 #include "scanfilter/input_error.hpp"
 #include "scanfilter/precision_recall_chart.hpp"
 #include "scanfilter/scan_renderer.hpp"
 #include "scanfilter/scan_source.hpp"
-#include "scanfilter/sim/odometry_drift.hpp"
 
 namespace scanfilter::cli {
 
 namespace {
 
+using accuracy::ParamValues;
+using accuracy::SceneVariant;
+using accuracy::ScoredFilter;
+using accuracy::TunedFamily;
+
 constexpr int kFigureFrames = 6;       // consecutive scans drawn per filter in the frames figure
 constexpr int kFigurePanelPixels = 420;
 
 using Logs = std::vector<sim::LabelledLog>;
+
+// Every simulated log of the comparison, the unchanged scenes too, goes
+// through dead reckoning, so a drift variant differs from the unchanged
+// scenes by its drift alone.
+constexpr sim::OdometryDrift kNoDrift{};
+const SceneVariant kUnchangedScenes{"unchanged scenes", 1.0, 0, kNoDrift};
 
 sim::LabelledLog readLabelledLog(const std::string& path) {
   auto source = openScanSource(path);
@@ -36,30 +48,6 @@ sim::LabelledLog readLabelledLog(const std::string& path) {
     log.scans.push_back(std::move(record.scan));
   }
   return log;
-}
-
-// A built-in scene, changed as a robustness variant asks.
-struct SceneVariant {
-  std::string name;
-  double noise_factor = 1.0;
-  int beams = 0;  // 0: the scene's own
-  sim::OdometryDrift drift{};
-};
-
-Logs simulateScenes(const std::vector<std::uint64_t>& seeds, const SceneVariant& variant, int max_frames) {
-  Logs logs;
-  for (const auto& name : sim::builtinSceneNames()) {
-    sim::Scene scene = sim::findScene(name);
-    scene.lidar.noise_sigma_base *= variant.noise_factor;
-    scene.lidar.noise_sigma_quadratic *= variant.noise_factor;
-    if (variant.beams > 0) scene.lidar.beams = variant.beams;
-    for (auto seed : seeds) {
-      auto log = sim::simulateLog(scene, seed, name + " seed " + std::to_string(seed), max_frames);
-      sim::applyOdometryDrift(log.scans, variant.drift);
-      logs.push_back(std::move(log));
-    }
-  }
-  return logs;
 }
 
 std::string fmt(const char* format, double v) {
@@ -83,8 +71,8 @@ void comparisonTable(std::ostream& out, const std::vector<TunedFamily>& tuned, c
       const ParamValues& values = variant == 0 ? tuned[f].defaults : tuned[f].tuned;
       const RemovalScore& s = r.score;
       out << "| " << tuned[f].family->name << (variant == 0 ? " (default)" : " (tuned)") << " | `"
-          << describe(*tuned[f].family, values) << "` | " << prf(s, s.jump()) << " | " << prf(s, s.misdetected())
-          << " | " << fmt("%.3f", s.artefactF1()) << " | " << pct(s.falseDeletionRate());
+          << accuracy::describe(*tuned[f].family, values) << "` | " << prf(s, s.jump()) << " | "
+          << prf(s, s.misdetected()) << " | " << fmt("%.3f", s.artefactF1()) << " | " << pct(s.falseDeletionRate());
       for (std::size_t b = 0; b < kRangeBandCount; ++b) out << " | " << pct(s.falseDeletionRate(b));
       out << " | " << fmt("%.1f %%", 100.0 * s.thinLegRetention()) << " | " << fmt("%.0f", r.micros_per_scan) << " |\n";
     }
@@ -131,8 +119,8 @@ void framesFigure(const std::string& path, const sim::LabelledLog& log, const st
                                   std::vector<Scan>(log.scans.begin(),
                                                     log.scans.begin() + static_cast<std::ptrdiff_t>(first + kFigureFrames))}};
   for (const auto& t : tuned) {
-    std::vector<std::vector<std::vector<std::uint8_t>>> labels;
-    scoreFamily(*t.family, t.tuned, one, &labels);  // from the log's start: multi-frame filters need their history
+    accuracy::LogLabels labels;
+    accuracy::scoreFamily(*t.family, t.tuned, one, &labels);  // from the log's start: multi-frame filters need their history
     ScanRenderer renderer;
     for (std::size_t i = first; i < first + kFigureFrames; ++i) renderer.add(one[0].scans[i], log.sensor, labels[0][i]);
     rows.push_back(renderer.draw({.panel_pixels = kFigurePanelPixels, .title = t.family->name + " (tuned)"}));
@@ -151,12 +139,12 @@ void framesFigure(const std::string& path, const sim::LabelledLog& log, const st
 void robustnessTables(std::ostream& out, const std::vector<TunedFamily>& tuned, const BenchAccuracyOptions& options,
                       const std::vector<ScoredFilter>* as_tested) {
   const std::vector<SceneVariant> variants = {
-      {"unchanged scenes", 1.0, 0, {}},
-      {"range noise x2", 2.0, 0, {}},
-      {"0.5° resolution (720 beams)", 1.0, 720, {}},
-      {"0.25° resolution (1440 beams)", 1.0, 1440, {}},
-      {"odometry drift 1 %, 0.5°/m", 1.0, 0, {0.01, 0.5 * M_PI / 180.0}},
-      {"odometry drift 3 %, 2°/m", 1.0, 0, {0.03, 2.0 * M_PI / 180.0}},
+      kUnchangedScenes,
+      {"range noise x2", 2.0, 0, kNoDrift},
+      {"0.5° resolution (720 beams)", 1.0, 720, kNoDrift},
+      {"0.25° resolution (1440 beams)", 1.0, 1440, kNoDrift},
+      {"odometry drift 1 %, 0.5°/m", 1.0, 0, sim::OdometryDrift{0.01, 0.5 * M_PI / 180.0}},
+      {"odometry drift 3 %, 2°/m", 1.0, 0, sim::OdometryDrift{0.03, 2.0 * M_PI / 180.0}},
   };
   std::ostringstream ours, all;
   ours << "| variant | jump P / R / F1 | misdetected P / R / F1 | valid deleted | thin legs kept | µs / scan |\n"
@@ -170,10 +158,10 @@ void robustnessTables(std::ostream& out, const std::vector<TunedFamily>& tuned, 
     const SceneVariant& variant = variants[v];
     const bool reuse = v == 0 && as_tested;
     std::cerr << "robustness: " << variant.name << "\n";
-    const Logs logs = reuse ? Logs{} : simulateScenes(options.test_seeds, variant, options.max_frames);
+    const Logs logs = reuse ? Logs{} : accuracy::simulateBuiltinScenes(options.test_seeds, options.max_frames, variant);
     all << "| " << variant.name << " |";
     for (std::size_t f = 0; f < tuned.size(); ++f) {
-      const ScoredFilter r = reuse ? (*as_tested)[f] : scoreFamily(*tuned[f].family, tuned[f].tuned, logs);
+      const ScoredFilter r = reuse ? (*as_tested)[f] : accuracy::scoreFamily(*tuned[f].family, tuned[f].tuned, logs);
       const RemovalScore& s = r.score;
       all << " " << fmt("%.3f", s.artefactF1()) << " (" << pct(s.falseDeletionRate()) << ") |";
       if (f == 0)
@@ -191,20 +179,22 @@ void robustnessTables(std::ostream& out, const std::vector<TunedFamily>& tuned, 
 
 int runBenchAccuracy(const BenchAccuracyOptions& options) {
   const FilterConfig ours = options.config.empty() ? FilterConfig{} : loadFilterConfig(options.config);
-  const auto families = comparisonFamilies(ours);
+  const auto families = accuracy::comparisonFamilies(ours);
   Logs tune_logs, test_logs;
   for (const auto& path : options.tune_logs) tune_logs.push_back(readLabelledLog(path));
   for (const auto& path : options.logs) test_logs.push_back(readLabelledLog(path));
-  if (tune_logs.empty()) tune_logs = simulateScenes({options.tune_seed}, SceneVariant{"tuning"}, options.max_frames);
-  if (test_logs.empty()) test_logs = simulateScenes(options.test_seeds, SceneVariant{"test"}, options.max_frames);
+  if (tune_logs.empty())
+    tune_logs = accuracy::simulateBuiltinScenes({options.tune_seed}, options.max_frames, kUnchangedScenes);
+  if (test_logs.empty())
+    test_logs = accuracy::simulateBuiltinScenes(options.test_seeds, options.max_frames, kUnchangedScenes);
 
   std::vector<TunedFamily> tuned;
   std::vector<ScoredFilter> as_default, as_tuned;
   for (const auto& family : families) {
     std::cerr << "tuning " << family.name << " (" << options.budget << " evaluations at most)\n";
-    tuned.push_back(tuneFamily(family, tune_logs, options.budget));
-    as_default.push_back(scoreFamily(family, tuned.back().defaults, test_logs));
-    as_tuned.push_back(scoreFamily(family, tuned.back().tuned, test_logs));
+    tuned.push_back(accuracy::tuneFamily(family, tune_logs, options.budget));
+    as_default.push_back(accuracy::scoreFamily(family, tuned.back().defaults, test_logs));
+    as_tuned.push_back(accuracy::scoreFamily(family, tuned.back().tuned, test_logs));
   }
 
   std::ostringstream report;

@@ -4,7 +4,7 @@ namespace scanfilter {
 
 // Which range sets the minimum tangential length l of equation (7). The paper
 // writes d_i (the seed) in l and d_ave in the arctangent; per-cluster wants
-// d_ave in both (algorithm-notes.md).
+// d_ave in both (docs/algorithm.md).
 enum class SpanRange { kClusterMean, kSeed };
 
 // Parameters of step 1, equations (5)-(7). Defaults are the values chosen by

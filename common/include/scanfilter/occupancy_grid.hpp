@@ -12,7 +12,7 @@
 
 namespace scanfilter {
 
-// Parameters of the log-odds occupancy map (config/map.yaml documents them).
+// Parameters of the log-odds occupancy map (config/map_publisher.yaml documents them).
 struct OccupancyGridParams {
   double resolution = 0.05;        // m per cell
   double hit_probability = 0.7;    // P(occupied | beam ended here)

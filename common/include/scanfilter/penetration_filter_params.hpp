@@ -38,7 +38,7 @@ struct PenetrationFilterParams {
   double pose_jump_reset = 0.5;     // m, a larger sensor jump between frames resets the cache
   std::size_t max_cache_frames = 200;  // bound on cached frames whatever T_max says
   bool cache_misdetected_points = false;  // misdetected points vote in later grids
-  // Beyond the paper (algorithm-notes.md): step 1 deletes every cluster of one
+  // Beyond the paper (docs/accuracy.md): step 1 deletes every cluster of one
   // or two beams, so a thin leg is always lost. A jump point is restored when
   // the cached frames put at least `rescue_min_count` returns in its cell:
   // persistent evidence that a jump point, which moves with the viewpoint,

@@ -9,7 +9,7 @@
 
 namespace scanfilter {
 
-// Streams a `.scanlog.jsonl` file (shared/docs/scan-log-format.md), one scan
+// Streams a `.scanlog.jsonl` file (docs/data-formats.md), one scan
 // at a time, validating every field. Unknown keys are kept, never rejected.
 class ScanLogReader final : public ScanSource {
  public:

@@ -1,18 +1,17 @@
 #pragma once
-// The filters of `scanfilter bench-accuracy`, each with the parameter grid
-// its tuning sweep draws from. The first value of every axis is the filter's
-// published default (ours: config/filter.yaml), so grid point 0 is the
-// filter as shipped. docs/baselines.md says where each default comes from.
+// A filter with the parameter grid its tuning sweep draws from. The first
+// value of every axis is the filter's published default, so grid point 0 is
+// the filter as shipped.
+#include <cstddef>
 #include <functional>
 #include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "scanfilter/filter_config.hpp"
 #include "scanfilter/scan_filter.hpp"
 
-namespace scanfilter::cli {
+namespace scanfilter::accuracy {
 
 struct SweepAxis {
   std::string name;
@@ -29,9 +28,6 @@ struct FilterFamily {
   FilterBuilder build;
 };
 
-// Our filter (from `ours`, usually config/filter.yaml) and the five baselines.
-std::vector<FilterFamily> comparisonFamilies(const FilterConfig& ours);
-
 // The grid points a sweep of `budget` evaluations tries: the default first,
 // then the rest of the grid in a fixed pseudo-random order (all of it when it
 // fits the budget). Same family and budget, same points.
@@ -40,4 +36,4 @@ std::vector<ParamValues> sweepPoints(const FilterFamily& family, std::size_t bud
 // "alpha=0.6 theta_k=70" (axes with one value left out).
 std::string describe(const FilterFamily& family, const ParamValues& values);
 
-}  // namespace scanfilter::cli
+}  // namespace scanfilter::accuracy
