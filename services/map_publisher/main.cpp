@@ -9,7 +9,7 @@
 #include <spdlog/spdlog.h>
 
 #include "map_metrics.hpp"
-#include "scanfilter/dds/map_message.hpp"
+#include "map_message.hpp"
 #include "scanfilter/dds/scan_message.hpp"
 #include "scanfilter/dds/service_runtime.hpp"
 #include "scanfilter/dds/stream_qos.hpp"

@@ -8,7 +8,7 @@
 
 namespace scanfilter::sim {
 
-// Defined in the generated builtin_scenes.cpp (see common/embed_scenes.cmake).
+// Defined in the generated builtin_scenes_embedded.cpp (see common/sim/embed_scenes.cmake).
 const std::vector<std::pair<std::string_view, std::string_view>>& builtinSceneTexts();
 
 std::vector<std::string> builtinSceneNames() {

@@ -1,4 +1,4 @@
-#include "scanfilter/dds/map_message.hpp"
+#include "map_message.hpp"
 
 #include "scanfilter/dds/scan_message.hpp"
 
