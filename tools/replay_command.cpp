@@ -45,6 +45,9 @@ int runReplay(const ReplayOptions& options) {
   if (score.frames() > 0)
     std::cout << "filter time: " << 1e3 * filter_time.count() / static_cast<double>(score.frames())
               << " ms per scan\n";
+  if (config.params.penetration_enabled && config.params.penetration.alignment.enabled)
+    std::cout << "step 2 frames not judged (did not fit the cache): " << filter.penetration().unalignedFrames()
+              << " of " << score.frames() << "\n";
   if (filter.penetration().resetCount() > 0)
     std::cout << "penetration cache resets on pose jumps: " << filter.penetration().resetCount() << "\n";
   if (writer) std::cout << "labelled log: " << options.output << "\n";

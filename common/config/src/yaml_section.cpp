@@ -14,7 +14,9 @@ std::size_t lineOf(const YAML::Node& node) {
 YamlSection::YamlSection(const YAML::Node& parent, const std::string& key, std::string file, std::string path_prefix)
     : file_(std::move(file)),
       path_(path_prefix.empty() ? key : path_prefix + "." + key),
-      node_(parent[key]) {  // init, not assign: yaml-cpp's operator= writes through
+      // init, not assign: yaml-cpp's operator= writes through. An absent
+      // parent (a subsection of a missing section) has no children.
+      node_(parent ? parent[key] : YAML::Node(YAML::NodeType::Undefined)) {
   if (node_ && !node_.IsMap()) throw InputError(file_, lineOf(node_), path_, "expected a mapping");
 }
 

@@ -40,6 +40,28 @@ void readJump(YamlSection& s, FilterConfig& config) {
   s.rejectUnknownKeys();
 }
 
+void readAlignment(const YamlSection& parent, FrameAlignmentParams& a) {
+  YamlSection s(parent.node(), "alignment", parent.file(), parent.path());
+  s.read("enabled", a.enabled);
+  s.read("max_iterations", a.max_iterations);
+  s.read("max_match_distance", a.max_match_distance);
+  s.read("max_neighbour_span", a.max_neighbour_span);
+  s.read("max_off_line", a.max_off_line);
+  s.read("min_matched_share", a.min_matched_share);
+  s.read("min_matches", a.min_matches);
+  s.read("max_rms", a.max_rms);
+  s.read("min_rms_gain", a.min_rms_gain);
+  s.requireRange("max_iterations", a.max_iterations, 1, 100, "an integer 1-100");
+  s.requireRange("max_match_distance", a.max_match_distance, 1e-3, 2.0, "0.001-2 (m)");
+  s.requireRange("max_neighbour_span", a.max_neighbour_span, 1e-3, 10.0, "0.001-10 (m)");
+  s.requireRange("max_off_line", a.max_off_line, 0.0, 1.0, "0-1 (m)");
+  s.requireRange("min_matched_share", a.min_matched_share, 0.0, 1.0, "0-1");
+  s.requireRange("min_matches", a.min_matches, 3, 1e6, "an integer >= 3 (three unknowns)");
+  s.requireRange("max_rms", a.max_rms, 0.0, 1.0, "0-1 (m)");
+  s.requireRange("min_rms_gain", a.min_rms_gain, 0.0, 1.0, "0-1 (m)");
+  s.rejectUnknownKeys();
+}
+
 void readPenetration(YamlSection& s, FilterConfig& config) {
   PenetrationFilterParams& p = config.params.penetration;
   s.read("enabled", config.params.penetration_enabled);
@@ -63,6 +85,8 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.read("rescue_persistent_points", p.rescue_persistent_points);
   s.read("rescue_min_count", p.rescue_min_count);
   s.read("rescue_radius", p.rescue_radius);
+  s.take("alignment");
+  readAlignment(s, p.alignment);
   s.requireRange("cell_size", p.cell_size, 1e-3, 10.0, "0.001 <= value <= 10 (m)");
   s.requireRange("frame_lifetime", p.frame_lifetime, 0.0, 1e9, "a value >= 0 (s)");
   s.requireRange("min_frames", p.min_frames, 1, 1e9, "an integer >= 1");

@@ -16,7 +16,8 @@ PenetrationFilter::PenetrationFilter(const PenetrationFilterParams& params)
       rule_(params),
       evidence_along_beam_(rule_, params.surface_gap),
       grid_(params.cell_size, params.obstacle_threshold),
-      evidence_(params.cell_size) {}
+      evidence_(params.cell_size),
+      aligner_(params.alignment) {}
 
 void PenetrationFilter::reset() {
   cache_.clear();
@@ -24,6 +25,7 @@ void PenetrationFilter::reset() {
   evidence_.clear();
   frames_seen_ = 0;
   last_origin_.reset();
+  correction_ = Eigen::Isometry2d::Identity();
 }
 
 void PenetrationFilter::resetOnPoseJump(const Eigen::Vector2d& origin, Stamp stamp) {
@@ -75,17 +77,47 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
   ++frames_seen_;
   expireFrames(scan.stamp);
   if (warmedUp()) {
-    judge(scan, sensor, labels);
+    const Judgement judgement = alignAndJudge(scan, sensor, labels);
+    correction_ = judgement.correction;
+    unaligned_ += !judgement.judged;
   } else {
-    worldPoints(scan, sensor, directions_, points_);
+    placeFrame(scan, sensor);
   }
-  cacheFrame(scan.stamp, labels);
+  cacheFrame(scan.stamp, labels);  // where the alignment put it: the cache stays self-consistent
 }
 
 void PenetrationFilter::judge(const Scan& scan, const SensorInfo& sensor,
                               std::span<std::uint8_t> labels) {
-  const Eigen::Vector2d origin = sensorOrigin(scan.pose, sensor.mount);
+  alignAndJudge(scan, sensor, labels);
+}
+
+Eigen::Vector2d PenetrationFilter::placeFrame(const Scan& scan, const SensorInfo& sensor) {
   worldPoints(scan, sensor, directions_, points_);
+  if (correction_.matrix() == Eigen::Matrix3d::Identity()) return sensorOrigin(scan.pose, sensor.mount);
+  for (auto& p : points_) p = correction_ * p;  // NaN stays NaN
+  return correction_ * sensorOrigin(scan.pose, sensor.mount);
+}
+
+PenetrationFilter::Judgement PenetrationFilter::alignAndJudge(const Scan& scan, const SensorInfo& sensor,
+                                                              std::span<std::uint8_t> labels) {
+  Eigen::Vector2d origin = placeFrame(scan, sensor);
+  Judgement out{false, correction_};
+  if (params_.alignment.enabled) {
+    // Step 1's jump points do not lie on surfaces: they must not pull the fit.
+    usable_.resize(labels.size());
+    for (std::size_t i = 0; i < labels.size(); ++i) usable_[i] = labels[i] == static_cast<std::uint8_t>(PointCode::kValid);
+    const FrameAlignment fit = aligner_.align(grid_, points_, usable_, origin);
+    if (!fit.good) return out;  // judged against a cache it does not fit, good points would go
+    for (auto& p : points_) p = fit.correction * p;
+    origin = fit.correction * origin;
+    out.correction = fit.correction * correction_;
+  }
+  judgePoints(origin, labels);
+  out.judged = true;
+  return out;
+}
+
+void PenetrationFilter::judgePoints(const Eigen::Vector2d& origin, std::span<std::uint8_t> labels) {
   if (params_.rescue_persistent_points) rescuePersistentPoints(labels);
   prepareJudging(origin);
   for (std::size_t i = 0; i < labels.size(); ++i) {

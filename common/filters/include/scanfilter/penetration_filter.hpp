@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include "scanfilter/frame_alignment.hpp"
 #include "scanfilter/implementation.hpp"
 #include "scanfilter/obstacle_window.hpp"
 #include "scanfilter/penetration_filter_params.hpp"
@@ -34,9 +35,9 @@ class PenetrationFilter {
   // kMisdetected. Frames must come in stamp order.
   void apply(const Scan& scan, const SensorInfo& sensor, std::span<std::uint8_t> labels);
 
-  // Judges `scan` against the current grid without changing any state: no
-  // cache update, no expiry, no warm-up count. apply() is reset check,
-  // expiry, judge() and caching.
+  // Judges `scan` against the current grid (aligned to it first, when
+  // alignment is on) without changing any state: no cache update, no expiry,
+  // no warm-up count. apply() is reset check, expiry, judge() and caching.
   void judge(const Scan& scan, const SensorInfo& sensor, std::span<std::uint8_t> labels);
 
   // Forget every cached frame and start the warm-up again.
@@ -47,6 +48,10 @@ class PenetrationFilter {
   std::size_t framesSinceReset() const { return frames_seen_; }
   std::size_t cachedFrames() const { return cache_.size(); }
   std::size_t resetCount() const { return resets_; }
+  // Frames past the warm-up that did not fit the cache and so were not judged.
+  std::size_t unalignedFrames() const { return unaligned_; }
+  // Odometry pose -> cache frame: what the alignment has corrected so far.
+  const Eigen::Isometry2d& poseCorrection() const { return correction_; }
   bool warmedUp() const { return frames_seen_ >= static_cast<std::size_t>(params_.min_frames); }
 
  protected:
@@ -83,6 +88,15 @@ class PenetrationFilter {
     std::vector<Eigen::Vector2d> points;  // vote in grid_
     std::vector<Eigen::Vector2d> others;  // the other returns, in evidence_ only
   };
+  // Where a frame lies: points_ under the pose and the running correction;
+  // returns the sensor origin there.
+  Eigen::Vector2d placeFrame(const Scan& scan, const SensorInfo& sensor);
+  struct Judgement {
+    bool judged = false;
+    Eigen::Isometry2d correction;  // the running correction after this frame
+  };
+  Judgement alignAndJudge(const Scan& scan, const SensorInfo& sensor, std::span<std::uint8_t> labels);
+  void judgePoints(const Eigen::Vector2d& origin, std::span<std::uint8_t> labels);
   void rescuePersistentPoints(std::span<std::uint8_t> labels);
   int evidenceAround(const Eigen::Vector2d& p) const;
   void resetOnPoseJump(const Eigen::Vector2d& origin, Stamp stamp);
@@ -94,6 +108,12 @@ class PenetrationFilter {
   std::optional<Eigen::Vector2d> last_origin_;
   std::size_t frames_seen_ = 0;
   std::size_t resets_ = 0;
+  FrameAligner aligner_;
+  // Odometry pose -> the cache's frame: the sum of the frames' alignments
+  // since the last reset.
+  Eigen::Isometry2d correction_ = Eigen::Isometry2d::Identity();
+  std::vector<bool> usable_;
+  std::size_t unaligned_ = 0;
 };
 
 // Steps a-f as printed: every point is tested against every obstacle cell.

@@ -1,6 +1,8 @@
 #pragma once
 #include <cstddef>
 
+#include "scanfilter/frame_alignment.hpp"
+
 namespace scanfilter {
 
 // Parameters of step 2, the grid penetration model (paper section 4.2).
@@ -49,6 +51,9 @@ struct PenetrationFilterParams {
   // this distance of the point: a thin leg's returns pile up within a few cm,
   // a jump point lies off every surface by more than that.
   double rescue_radius = 0.08;  // m
+  // Beyond the paper: each frame is fitted to the cache before it is judged
+  // (frame_alignment.hpp); a frame that does not fit is not judged.
+  FrameAlignmentParams alignment;
 };
 
 }  // namespace scanfilter

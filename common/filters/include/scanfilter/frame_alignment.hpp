@@ -1,0 +1,94 @@
+#pragma once
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "scanfilter/penetration_grid.hpp"
+
+namespace scanfilter {
+
+// Parameters of the frame alignment of step 2 (beyond the paper): before a
+// frame is judged, it is fitted to the cached frames' obstacle cells, so that
+// pose error (wheel odometry drifts) does not make its beams appear to pass
+// through walls they in fact end on.
+struct FrameAlignmentParams {
+  bool enabled = true;
+  int max_iterations = 8;
+  // A point matches the nearest obstacle cell within this distance (m); it
+  // bounds the pose error the alignment can take out per frame.
+  double max_match_distance = 0.15;
+  // The two neighbours that give a point its surface direction must be
+  // within this distance of each other (m) and the point within
+  // `max_off_line` of their line: otherwise it has no normal and no say.
+  double max_neighbour_span = 0.3;
+  double max_off_line = 0.02;
+  // The fit is good, and the frame judged, when at least this share of the
+  // points with a normal matched, at least `min_matches` of them, and their
+  // RMS distance to the matched surfaces is at most `max_rms` (m).
+  double min_matched_share = 0.5;
+  int min_matches = 20;
+  double max_rms = 0.03;
+  // A correction is taken only if it brings the matched points at least this
+  // much nearer their surfaces (RMS, m): with good poses the fit would
+  // otherwise chase range noise and let the cache wander; a frame that
+  // already fits keeps its pose.
+  double min_rms_gain = 0.003;
+};
+
+
+// A rigid correction of a frame (rotation about the sensor, then a shift)
+// and how well the frame fitted after it.
+struct FrameAlignment {
+  Eigen::Isometry2d correction = Eigen::Isometry2d::Identity();
+  bool good = false;
+  int matches = 0;
+  int candidates = 0;
+  double rms = 0.0;
+};
+
+// Point-to-line ICP of one frame's world points onto the obstacle cells of
+// the cache (their centroids): each point with a surface direction (from its
+// scan neighbours) matches the nearest obstacle cell, and a Gauss-Newton step
+// minimises the distances along the points' normals (a direction no surface
+// constrains, along a corridor, is left as the odometry put it).
+// Bounded iterations; deterministic, so both implementations of step 2 see
+// the same correction.
+class FrameAligner {
+ public:
+  explicit FrameAligner(const FrameAlignmentParams& params) : params_(params) {}
+
+  // `points`: the frame's world points (NaN: no return); `usable[i]` false
+  // for points that must not pull the fit (step 1's jump points).
+  FrameAlignment align(const PenetrationGrid& grid, std::span<const Eigen::Vector2d> points,
+                       const std::vector<bool>& usable, const Eigen::Vector2d& origin);
+
+ private:
+  struct Match {
+    Eigen::Vector2d point;   // in the frame, before the correction
+    Eigen::Vector2d normal;  // unit, in the frame, before the correction
+    Eigen::Vector2d target;  // the matched cell's centroid, in the world
+  };
+  void snapshotObstacles(const PenetrationGrid& grid, std::span<const Eigen::Vector2d> points);
+  const Eigen::Vector2d* nearestObstacle(const Eigen::Vector2d& p) const;
+  void findNormals(std::span<const Eigen::Vector2d> points, const std::vector<bool>& usable);
+  int matchPoints(const Eigen::Isometry2d& correction);
+  // One Gauss-Newton step of the point-to-line distances.
+  Eigen::Isometry2d step(const Eigen::Isometry2d& correction, const Eigen::Vector2d& origin) const;
+  double rms(const Eigen::Isometry2d& correction) const;
+
+  FrameAlignmentParams params_;
+  // Obstacle centroids over the frame's reach, one slot per cell (NaN: none).
+  std::vector<Eigen::Vector2d> cells_;
+  CellIndex lo_;
+  int width_ = 0;
+  int height_ = 0;
+  double cell_size_ = 0.0;
+  std::vector<Eigen::Vector2d> with_normal_points_;
+  std::vector<Eigen::Vector2d> normals_;
+  std::vector<Match> matches_;
+};
+
+}  // namespace scanfilter

@@ -1,0 +1,162 @@
+#include "scanfilter/frame_alignment.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Dense>
+
+#include "scanfilter/scan_geometry.hpp"
+
+namespace scanfilter {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// A step smaller than this (m, rad) has converged.
+constexpr double kConvergedShift = 1e-4;
+constexpr double kConvergedTurn = 1e-5;
+// Relative to the matches' count: far below what one constraining normal adds.
+constexpr double kRidge = 1e-6;
+
+Eigen::Vector2d perpendicular(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
+
+}  // namespace
+
+void FrameAligner::snapshotObstacles(const PenetrationGrid& grid, std::span<const Eigen::Vector2d> points) {
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector2d hi = -lo;
+  for (const auto& p : points) {
+    if (std::isnan(p.x())) continue;
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  cell_size_ = grid.cellSize();
+  if (!(lo.x() <= hi.x())) {
+    width_ = height_ = 0;
+    return;
+  }
+  const double reach = params_.max_match_distance + cell_size_;
+  lo_ = grid.cellOf(lo.array() - reach);
+  const CellIndex top = grid.cellOf(hi.array() + reach);
+  width_ = top.x - lo_.x + 1;
+  height_ = top.y - lo_.y + 1;
+  cells_.assign(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), Eigen::Vector2d(kNaN, kNaN));
+  grid.forEachObstacleIn(lo_, top, [&](CellIndex c) {
+    cells_[static_cast<std::size_t>((c.y - lo_.y) * width_ + (c.x - lo_.x))] = grid.centroid(c);
+  });
+}
+
+const Eigen::Vector2d* FrameAligner::nearestObstacle(const Eigen::Vector2d& p) const {
+  const auto reach = static_cast<int>(std::ceil(params_.max_match_distance / cell_size_));
+  const auto cx = static_cast<int>(std::floor(p.x() / cell_size_)) - lo_.x;
+  const auto cy = static_cast<int>(std::floor(p.y() / cell_size_)) - lo_.y;
+  const Eigen::Vector2d* best = nullptr;
+  double best_sq = params_.max_match_distance * params_.max_match_distance;
+  for (int y = std::max(0, cy - reach); y <= std::min(height_ - 1, cy + reach); ++y) {
+    for (int x = std::max(0, cx - reach); x <= std::min(width_ - 1, cx + reach); ++x) {
+      const Eigen::Vector2d& q = cells_[static_cast<std::size_t>(y * width_ + x)];
+      if (std::isnan(q.x())) continue;
+      const double d = (q - p).squaredNorm();
+      if (d <= best_sq) {
+        best_sq = d;
+        best = &q;
+      }
+    }
+  }
+  return best;
+}
+
+void FrameAligner::findNormals(std::span<const Eigen::Vector2d> points, const std::vector<bool>& usable) {
+  with_normal_points_.clear();
+  normals_.clear();
+  for (std::size_t i = 1; i + 1 < points.size(); ++i) {
+    if (!usable[i] || !usable[i - 1] || !usable[i + 1]) continue;
+    const Eigen::Vector2d& a = points[i - 1];
+    const Eigen::Vector2d& b = points[i + 1];
+    const Eigen::Vector2d along = b - a;
+    const double span = along.norm();
+    if (!(span > 0.0 && span <= params_.max_neighbour_span)) continue;
+    if (distanceToLine(points[i], a, b) > params_.max_off_line) continue;
+    with_normal_points_.push_back(points[i]);
+    normals_.push_back(perpendicular(along) / span);
+  }
+}
+
+int FrameAligner::matchPoints(const Eigen::Isometry2d& correction) {
+  matches_.clear();
+  for (std::size_t k = 0; k < with_normal_points_.size(); ++k) {
+    if (const Eigen::Vector2d* q = nearestObstacle(correction * with_normal_points_[k]))
+      matches_.push_back({with_normal_points_[k], normals_[k], *q});
+  }
+  return static_cast<int>(matches_.size());
+}
+
+Eigen::Isometry2d FrameAligner::step(const Eigen::Isometry2d& correction, const Eigen::Vector2d& origin) const {
+  // Unknowns: shift (x, y) and turn about the corrected sensor origin.
+  const Eigen::Vector2d centre = correction * origin;
+  Eigen::Matrix3d h = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d g = Eigen::Vector3d::Zero();
+  for (const auto& m : matches_) {
+    const Eigen::Vector2d p = correction * m.point;
+    const Eigen::Vector2d n = correction.linear() * m.normal;
+    const Eigen::Vector3d jacobian(n.x(), n.y(), n.dot(perpendicular(p - centre)));
+    h += jacobian * jacobian.transpose();
+    g += jacobian * n.dot(p - m.target);
+  }
+  // A direction no match constrains (all normals across a corridor) gets no
+  // step: a tiny ridge keeps the solve well posed without moving the others.
+  h.diagonal().array() += kRidge * static_cast<double>(matches_.size());
+  const Eigen::Vector3d delta = -h.ldlt().solve(g);
+  Eigen::Isometry2d update = Eigen::Isometry2d::Identity();
+  update.translate(centre + Eigen::Vector2d(delta.x(), delta.y()));
+  update.rotate(delta.z());
+  update.translate(-centre);
+  return update * correction;
+}
+
+double FrameAligner::rms(const Eigen::Isometry2d& correction) const {
+  if (matches_.empty()) return 0.0;
+  double sum = 0.0;
+  for (const auto& m : matches_) {
+    const double d = (correction.linear() * m.normal).dot(correction * m.point - m.target);
+    sum += d * d;
+  }
+  return std::sqrt(sum / static_cast<double>(matches_.size()));
+}
+
+FrameAlignment FrameAligner::align(const PenetrationGrid& grid, std::span<const Eigen::Vector2d> points,
+                                   const std::vector<bool>& usable, const Eigen::Vector2d& origin) {
+  FrameAlignment out;
+  snapshotObstacles(grid, points);
+  findNormals(points, usable);
+  out.candidates = static_cast<int>(with_normal_points_.size());
+  if (width_ == 0 || out.candidates == 0) return out;
+  const Eigen::Isometry2d identity = Eigen::Isometry2d::Identity();
+  const int matched_as_is = matchPoints(identity);
+  const double rms_as_is = rms(identity);
+  Eigen::Isometry2d correction = identity;
+  for (int iteration = 0; iteration < params_.max_iterations; ++iteration) {
+    if (matchPoints(correction) < params_.min_matches) break;
+    const Eigen::Isometry2d next = step(correction, origin);
+    const Eigen::Isometry2d delta = next * correction.inverse();
+    correction = next;
+    if (delta.translation().norm() < kConvergedShift &&
+        std::abs(Eigen::Rotation2Dd(delta.linear()).angle()) < kConvergedTurn)
+      break;
+  }
+  out.matches = matchPoints(correction);
+  out.rms = rms(correction);
+  const bool gained = out.matches >= matched_as_is && out.rms <= rms_as_is - params_.min_rms_gain;
+  if (!gained) {  // the frame fits as well where odometry put it: keep that
+    out.matches = matchPoints(identity);
+    out.rms = rms_as_is;
+    correction = identity;
+  }
+  out.correction = correction;
+  out.good = out.matches >= params_.min_matches &&
+             out.matches >= params_.min_matched_share * static_cast<double>(out.candidates) &&
+             out.rms <= params_.max_rms;
+  return out;
+}
+
+}  // namespace scanfilter
