@@ -191,3 +191,28 @@ TEST(JumpClusterRule, Equation7InterpolatesTheMinimumLength) {
 
 }  // namespace
 }  // namespace scanfilter
+
+namespace scanfilter {
+namespace {
+
+// A long wall seen at grazing incidence from 0.5 m beside it: with 1° beams its
+// returns lie far apart (range·Δθ / cos incidence, 0.3 m at 4 m), farther than
+// eq. 5's radius, so eq. 7 would delete them cluster by cluster. One straight
+// run of them is one surface and joins one cluster.
+std::size_t jumpPointsOnAGrazingWall(bool straight_runs) {
+  const SensorInfo sensor = test::simpleSensor();
+  const Scan scan = castScan(World{}.wall({-1, 0.5}, {8, 0.5}), {0, 0, 0}, sensor);
+  JumpFilterParams params;
+  params.straight_runs = straight_runs;
+  std::vector<std::uint8_t> labels(scan.size());
+  makeJumpFilter(params, Implementation::kFast)->apply(scan, sensor, labels);
+  return static_cast<std::size_t>(std::count(labels.begin(), labels.end(), static_cast<std::uint8_t>(PointCode::kJump)));
+}
+
+TEST(StraightRuns, KeepAWallSeenAtGrazingIncidence) {
+  EXPECT_GT(jumpPointsOnAGrazingWall(false), 3u) << "without the join the wall falls apart, or this shows nothing";
+  EXPECT_EQ(jumpPointsOnAGrazingWall(true), 0u);
+}
+
+}  // namespace
+}  // namespace scanfilter

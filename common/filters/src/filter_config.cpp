@@ -23,6 +23,11 @@ void readJump(YamlSection& s, FilterConfig& config) {
   s.readChoice("span_range", span, {"cluster_mean", "seed"});
   p.span_range = span == "seed" ? SpanRange::kSeed : SpanRange::kClusterMean;
   s.read("off_surface_check", p.off_surface_check);
+  s.read("straight_runs", p.straight_runs);
+  s.read("straight_run_max_incidence_deg", p.straight_run_max_incidence_deg);
+  s.read("straight_run_min_points", p.straight_run_min_points);
+  s.requireRange("straight_run_max_incidence_deg", p.straight_run_max_incidence_deg, 0.0, 89.9, "0-89.9 (degrees)");
+  s.requireRange("straight_run_min_points", p.straight_run_min_points, 3, 1e6, "an integer >= 3");
   s.read("off_surface_min", p.off_surface_min);
   s.read("off_surface_sigmas", p.off_surface_sigmas);
   s.read("noise_sigma_base", p.noise_sigma_base);

@@ -18,17 +18,37 @@ void JumpFilter::apply(const Scan& scan, const SensorInfo& sensor, std::span<std
     labels[i] = static_cast<std::uint8_t>(scan.hasReturn(i) ? PointCode::kValid : PointCode::kNoReturn);
   }
   prepare(scan);
+  cluster_of_.assign(n, StraightRunJoin::kNoCluster);
+  std::uint32_t clusters = 0;
   for (std::uint32_t seed = 0; seed < n; ++seed) {
     if (!free_[seed]) continue;
     cluster_.clear();
     growCluster(seed, scan);
-    // Index order makes the span and mean range independent of growth order.
-    std::sort(cluster_.begin(), cluster_.end());
-    if (!rule_.keepsCluster(cluster_, scan.ranges, n, full_turn_, scan.angle_increment)) {
-      for (std::uint32_t m : cluster_) labels[m] = static_cast<std::uint8_t>(PointCode::kJump);
-    }
+    for (std::uint32_t m : cluster_) cluster_of_[m] = clusters;
+    ++clusters;
   }
+  judgeClusters(scan, clusters, labels);
   off_surface_.apply(points_, scan.ranges, full_turn_, labels);
+}
+
+void JumpFilter::judgeClusters(const Scan& scan, std::uint32_t cluster_count, std::span<std::uint8_t> labels) {
+  const std::size_t n = scan.size();
+  const auto& joined = runs_.join(points_, scan.ranges, full_turn_, scan.angle_increment, cluster_of_, cluster_count);
+  // Group the beams by joined cluster, each group in index order (a counting
+  // sort), so the span and mean range do not depend on how clusters grew.
+  group_start_.assign(cluster_count + 1, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    if (cluster_of_[i] != StraightRunJoin::kNoCluster) ++group_start_[joined[cluster_of_[i]] + 1];
+  for (std::uint32_t c = 0; c < cluster_count; ++c) group_start_[c + 1] += group_start_[c];
+  grouped_.resize(group_start_[cluster_count]);
+  cluster_ = group_start_;  // fill positions
+  for (std::uint32_t i = 0; i < n; ++i)
+    if (cluster_of_[i] != StraightRunJoin::kNoCluster) grouped_[cluster_[joined[cluster_of_[i]]]++] = i;
+  for (std::uint32_t c = 0; c < cluster_count; ++c) {
+    const std::span<const std::uint32_t> members(grouped_.data() + group_start_[c], group_start_[c + 1] - group_start_[c]);
+    if (members.empty() || rule_.keepsCluster(members, scan.ranges, n, full_turn_, scan.angle_increment)) continue;
+    for (std::uint32_t m : members) labels[m] = static_cast<std::uint8_t>(PointCode::kJump);
+  }
 }
 
 // --- Reference: the paper's steps 2-5 literally -----------------------------

@@ -9,6 +9,7 @@
 #include "scanfilter/implementation.hpp"
 #include "scanfilter/jump_cluster_rule.hpp"
 #include "scanfilter/off_surface_check.hpp"
+#include "scanfilter/straight_run_join.hpp"
 #include "scanfilter/scan.hpp"
 #include "scanfilter/scan_geometry.hpp"
 #include "scanfilter/sensor_info.hpp"
@@ -19,7 +20,7 @@ namespace scanfilter {
 // Writes one code per beam: no return, jump, or valid.
 class JumpFilter {
  public:
-  explicit JumpFilter(const JumpFilterParams& params) : rule_(params), off_surface_(params) {}
+  explicit JumpFilter(const JumpFilterParams& params) : rule_(params), off_surface_(params), runs_(params) {}
   virtual ~JumpFilter() = default;
 
   void apply(const Scan& scan, const SensorInfo& sensor, std::span<std::uint8_t> labels);
@@ -36,11 +37,20 @@ class JumpFilter {
 
   JumpClusterRule rule_;
   OffSurfaceCheck off_surface_;
+  StraightRunJoin runs_;
   BeamDirectionTable directions_;
   std::vector<Eigen::Vector2d> points_;  // sensor frame
   std::vector<std::uint8_t> free_;       // 1 while a point belongs to no cluster
   std::vector<std::uint32_t> cluster_;
   bool full_turn_ = false;
+
+ private:
+  // Eq. 6-7 on every cluster, after the straight runs joined those they pass through.
+  void judgeClusters(const Scan& scan, std::uint32_t cluster_count, std::span<std::uint8_t> labels);
+
+  std::vector<std::uint32_t> cluster_of_;  // per beam; StraightRunJoin::kNoCluster without a return
+  std::vector<std::uint32_t> group_start_;  // members of each joined cluster, grouped, in index order
+  std::vector<std::uint32_t> grouped_;
 };
 
 // The paper's steps as written: every member is compared with every free point.

@@ -27,6 +27,17 @@ struct JumpFilterParams {
   double off_surface_sigmas = 4.0;        // offsets within this many σ(range) are noise
   double noise_sigma_base = 0.003;        // m, the sensor's range noise σ at zero range
   double noise_sigma_quadratic = 0.001;   // m per m²: σ(d) = base + quadratic·d² (triangulation)
+  // Beyond the paper: a wall seen at grazing incidence has its returns far
+  // apart (range·Δθ / cos incidence), farther than eq. 5's radius, so it falls
+  // apart into clusters small enough for eq. 7 to delete. Consecutive returns
+  // on one straight line (each within the off-surface tolerance of the line
+  // through its neighbours), at most as far apart as a surface at
+  // `straight_run_max_incidence_deg` would put them, join one cluster when
+  // the run has at least `straight_run_min_points` returns (a short run of
+  // mixed returns between an edge and its background is no surface).
+  bool straight_runs = true;
+  double straight_run_max_incidence_deg = 85.0;
+  int straight_run_min_points = 5;
 };
 
 }  // namespace scanfilter
