@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Regenerates every measured part of docs/accuracy.md: the two-step filter's
 # own table, the comparison with the baselines (tables, P/R charts, frames
-# figure, robustness) and the real-recording report (tables, maps). Builds
+# figure, robustness) and the real-recording report (tables, maps, the
+# multi-view consistency of every filter). Builds
 # first. Takes about 10 minutes on 2 cores.
 #   bash scripts/accuracy-report.sh
 # The generated blocks sit between `<!-- generated:NAME -->` and
@@ -18,7 +19,7 @@ trap 'rm -rf "$WORK"' EXIT
 
 "$BIN/bench/accuracy_table" > "$WORK/table.md"
 "$BIN/tools/scanfilter" bench-accuracy --config config/filter.yaml -o "$WORK/compare"
-"$BIN/tools/scanfilter" report-real --config config/filter.yaml \
+"$BIN/tools/scanfilter" report-real --config config/filter.yaml --literal-config config/filter-paper-literal.yaml \
   "$REAL"/carmen/*.log.gz "$REAL"/mines_urg04lx/*.dat -o "$WORK/real" --image-prefix images/
 
 cp "$WORK"/compare/*.png "$WORK"/real/*.png docs/images/
@@ -36,4 +37,5 @@ splice() {
 splice table "$WORK/table.md"
 splice comparison "$WORK/compare/accuracy-comparison.md"
 splice real "$WORK/real/real-recordings.md"
+splice real-consistency "$WORK/real/real-consistency.md"
 echo "docs/accuracy.md and docs/images/ regenerated"

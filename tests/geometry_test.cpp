@@ -1,5 +1,7 @@
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -104,6 +106,21 @@ TEST(Geometry, FullTurnDetection) {
   s.angle_increment = -2 * kPi / 360;
   s.ranges.assign(360, 1.0);
   EXPECT_TRUE(isFullTurn(s));
+}
+
+TEST(Geometry, LocalSurfaceDirectionNeedsThreeReturnsOnOneLine) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  constexpr double kTolerance = 0.05;
+  std::vector<Eigen::Vector2d> points = {{0.0, 1.0}, {0.1, 1.01}, {0.2, 1.0}, {0.3, 1.5}, {nan, nan}, {0.5, 1.0}};
+  const auto flat = localSurfaceDirection(points, 1, kTolerance);
+  ASSERT_TRUE(flat.has_value());
+  EXPECT_NEAR(flat->x(), 0.2, 1e-12);
+  EXPECT_NEAR(flat->y(), 0.0, 1e-12);
+  EXPECT_FALSE(localSurfaceDirection(points, 2, kTolerance)) << "a bend: point 3 lies 0.5 m off";
+  EXPECT_FALSE(localSurfaceDirection(points, 3, kTolerance)) << "a missing neighbour";
+  EXPECT_FALSE(localSurfaceDirection(points, 0, kTolerance)) << "the first beam has one neighbour";
+  EXPECT_FALSE(localSurfaceDirection(points, 5, kTolerance)) << "the last beam has one neighbour";
+  EXPECT_TRUE(localSurfaceDirection(points, 2, 0.3)) << "within a looser tolerance";
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "table_numbers.hpp"
 #include "scanfilter/accuracy/comparison_families.hpp"
 #include "scanfilter/accuracy/family_tuning.hpp"
 #include "scanfilter/accuracy/labelled_logs.hpp"
@@ -50,12 +51,6 @@ sim::LabelledLog readLabelledLog(const std::string& path) {
   return log;
 }
 
-std::string fmt(const char* format, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
-}
-std::string pct(double v) { return fmt("%.2f %%", 100.0 * v); }
 std::string prf(const RemovalScore& s, const RemovalClassScore& c) {
   return fmt("%.3f", s.removalPrecision(c)) + " / " + fmt("%.3f", c.recall()) + " / **" + fmt("%.3f", s.removalF1(c)) + "**";
 }

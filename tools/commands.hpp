@@ -65,7 +65,8 @@ struct BenchAccuracyOptions {
 struct ReportRealOptions {
   std::vector<std::string> logs;  // CARMEN, Mines URG-04LX or scan logs
   std::string config;             // filter config (empty: built-in defaults)
-  std::string output_dir;         // real-recordings.md and map pictures; empty: stdout only
+  std::string literal_config;     // the paper-literal config, also scored (empty: left out)
+  std::string output_dir;         // real-recordings.md, real-consistency.md and pictures; empty: stdout only
   std::string image_prefix;       // how real-recordings.md refers to the pictures' directory
   double carmen_range_max = 80.0;
 };

@@ -80,10 +80,13 @@ int main(int argc, char** argv) {
 
   ReportRealOptions real;
   auto* rr = app.add_subcommand("report-real",
-                                "Real recordings: points removed by reason, maps filtered vs unfiltered, pose-error effects");
+                                "Real recordings: points removed by reason, maps filtered vs unfiltered, pose-error effects, multi-view consistency");
   rr->add_option("logs", real.logs, "CARMEN, Mines URG-04LX (.dat) or scan logs")->required()->check(CLI::ExistingFile);
   rr->add_option("--config", real.config, "filter config YAML (default: built-in defaults)")->check(CLI::ExistingFile);
-  rr->add_option("-o,--output-dir", real.output_dir, "write real-recordings.md and the map pictures here");
+  rr->add_option("--literal-config", real.literal_config,
+                 "paper-literal filter config (config/filter-paper-literal.yaml), scored beside the others")
+      ->check(CLI::ExistingFile);
+  rr->add_option("-o,--output-dir", real.output_dir, "write real-recordings.md, real-consistency.md and the pictures here");
   rr->add_option("--image-prefix", real.image_prefix, "path prefix of the pictures in real-recordings.md (e.g. images/)");
   rr->add_option("--carmen-range-max", real.carmen_range_max, "CARMEN logs: ranges at or above this are no return (m)")->capture_default_str();
 

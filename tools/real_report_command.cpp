@@ -1,15 +1,19 @@
 // `scanfilter report-real`: what the two-step filter does to real recordings
 // (no truth): points removed by reason, occupancy maps from filtered and
-// unfiltered scans side by side, and how pose error (odometry drift, pose
-// jumps) moves the penetration step.
+// unfiltered scans side by side, how pose error (odometry drift, pose jumps)
+// moves the penetration step, and every filter's removals against the
+// returns seen again from elsewhere (multi-view consistency).
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "commands.hpp"
+#include "real_consistency_report.hpp"
+#include "table_numbers.hpp"
 #include "scanfilter/filter_config.hpp"
 #include "scanfilter/map_files.hpp"
 #include "scanfilter/mines_log_reader.hpp"
@@ -111,14 +115,6 @@ void saveSideBySide(const OccupancyGrid& unfiltered, const OccupancyGrid& filter
   image.save(path);
 }
 
-std::string fmt(const char* format, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
-}
-std::string pct(std::size_t part, std::size_t whole) {
-  return fmt("%.2f %%", whole ? 100.0 * static_cast<double>(part) / static_cast<double>(whole) : 0.0);
-}
 
 std::vector<Condition> conditions(const FilterConfig& base) {
   std::vector<Condition> out;
@@ -140,6 +136,9 @@ std::vector<Condition> conditions(const FilterConfig& base) {
 
 int runReportReal(const ReportRealOptions& options) {
   const FilterConfig base = options.config.empty() ? FilterConfig{} : loadFilterConfig(options.config);
+  const std::optional<FilterConfig> literal =
+      options.literal_config.empty() ? std::nullopt : std::optional(loadFilterConfig(options.literal_config));
+  RealConsistencyReport consistency(consistencyFilters(base, literal));
   if (!options.output_dir.empty()) std::filesystem::create_directories(options.output_dir);
   std::ostringstream report;
   report << "| log | poses | condition | scans | returns | jump removed | misdetected removed | cache resets | ms / scan |\n"
@@ -149,6 +148,7 @@ int runReportReal(const ReportRealOptions& options) {
   for (const auto& path : options.logs) {
     std::cerr << "report-real: " << path << "\n";
     const RecordedLog log = readLog(path, options.carmen_range_max);
+    const std::string stem = std::filesystem::path(log.name).stem().stem().string();
     const bool odometry_only = log.source.starts_with(MinesLogReader::kSourcePrefix);
     const std::string poses = odometry_only ? "wheel odometry" : "as logged";
     for (const auto& condition : conditions(base)) {
@@ -162,18 +162,27 @@ int runReportReal(const ReportRealOptions& options) {
       const OccupancyGrid filtered = buildMap(log, &r.labels), unfiltered = buildMap(log, nullptr);
       std::string picture = "-";
       if (!options.output_dir.empty()) {
-        picture = "real-map-" + std::filesystem::path(log.name).stem().stem().string() + ".png";
+        picture = "real-map-" + stem + ".png";
         saveSideBySide(unfiltered, filtered, log.name, (std::filesystem::path(options.output_dir) / picture).string());
       }
       const std::string shown = picture == "-" ? picture : "![" + log.name + "](" + options.image_prefix + picture + ")";
       maps << "| " << log.name << " | " << occupiedCells(unfiltered) << " | " << occupiedCells(filtered) << " | "
            << shown << " |\n";
     }
+    const std::string picture = "real-consistency-" + stem + ".png";
+    consistency.add({log.name, log.sensor, log.scans},
+                    options.output_dir.empty() ? "" : (std::filesystem::path(options.output_dir) / picture).string(),
+                    options.image_prefix + picture);
   }
   report << maps.str();
-  if (!options.output_dir.empty())
-    std::ofstream((std::filesystem::path(options.output_dir) / "real-recordings.md").string()) << report.str();
-  std::cout << report.str();
+  std::ostringstream consistency_tables;
+  consistency.write(consistency_tables);
+  if (!options.output_dir.empty()) {
+    const std::filesystem::path dir(options.output_dir);
+    std::ofstream((dir / "real-recordings.md").string()) << report.str();
+    std::ofstream((dir / "real-consistency.md").string()) << consistency_tables.str();
+  }
+  std::cout << report.str() << "\n" << consistency_tables.str();
   return 0;
 }
 

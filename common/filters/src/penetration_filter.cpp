@@ -135,19 +135,13 @@ double PenetrationFilter::ownMarginSq(const Eigen::Vector2d& origin, std::size_t
 }
 
 double PenetrationFilter::grazingRun(const Eigen::Vector2d& origin, std::size_t i) const {
-  if (i == 0 || i + 1 >= points_.size()) return 0.0;
-  const Eigen::Vector2d& p = points_[i];
-  const Eigen::Vector2d& a = points_[i - 1];
-  const Eigen::Vector2d& b = points_[i + 1];
-  if (std::isnan(a.x()) || std::isnan(b.x())) return 0.0;
-  const Eigen::Vector2d surface = b - a;
-  const Eigen::Vector2d beam = p - origin;
-  if (surface.squaredNorm() == 0.0 || beam.squaredNorm() == 0.0) return 0.0;
   // One surface only when p lies on the line through its neighbours.
-  if (distanceToLine(p, a, b) > params_.straddle_half_width) return 0.0;
+  const auto surface = localSurfaceDirection(points_, i, params_.straddle_half_width);
+  const Eigen::Vector2d beam = points_[i] - origin;
+  if (!surface || beam.squaredNorm() == 0.0) return 0.0;
   // straddle / tan(grazing angle): |beam · surface| / |beam × surface|.
-  const double across = std::abs(beam.x() * surface.y() - beam.y() * surface.x());
-  const double along = std::abs(beam.dot(surface));
+  const double across = std::abs(beam.x() * surface->y() - beam.y() * surface->x());
+  const double along = std::abs(beam.dot(*surface));
   if (across == 0.0) return std::numeric_limits<double>::infinity();  // the beam runs along it
   return params_.straddle_half_width * along / across;
 }

@@ -45,6 +45,11 @@ constexpr Glyph kFont[] = {
 constexpr int kGlyphWidth = 5;
 constexpr int kGlyphHeight = 7;
 constexpr int kGlyphAdvance = 6;
+// Legend layout (pixels): swatch side, where its name starts, and the space
+// between one entry's name and the next swatch.
+constexpr int kSwatchSize = 14;
+constexpr int kSwatchToText = 22;
+constexpr int kLegendEntryGap = 18;
 
 const Glyph* findGlyph(char c) {
   if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
@@ -102,6 +107,15 @@ void PngImage::text(int x, int y, const std::string& s, Rgb colour, int scale) {
             fillRect(x + col * scale, y + row * scale, x + (col + 1) * scale - 1, y + (row + 1) * scale - 1, colour);
     }
     x += kGlyphAdvance * scale;
+  }
+}
+
+void PngImage::legend(int x, int y, const std::vector<std::pair<Rgb, std::string>>& entries, Rgb text_colour,
+                      int scale) {
+  for (const auto& [colour, name] : entries) {
+    fillRect(x, y, x + kSwatchSize, y + kSwatchSize, colour);
+    text(x + kSwatchToText, y, name, text_colour, scale);
+    x += kSwatchToText + kLegendEntryGap + static_cast<int>(name.size()) * kGlyphAdvance * scale;
   }
 }
 

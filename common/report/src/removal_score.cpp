@@ -1,19 +1,10 @@
 #include "scanfilter/removal_score.hpp"
 
+#include "scanfilter/value_band.hpp"
+
 namespace scanfilter {
 
-namespace {
-bool isRemoved(std::uint8_t code) {
-  return code == static_cast<std::uint8_t>(PointCode::kJump) ||
-         code == static_cast<std::uint8_t>(PointCode::kMisdetected);
-}
-}  // namespace
-
-std::size_t rangeBand(double range) {
-  std::size_t band = 0;
-  while (band < kRangeBandEdges.size() && range >= kRangeBandEdges[band]) ++band;
-  return band;
-}
+std::size_t rangeBand(double range) { return bandOf(range, kRangeBandEdges); }
 
 void RemovalScore::add(const Scan& scan, std::span<const std::uint8_t> labels) {
   ++frames_;
@@ -26,23 +17,23 @@ void RemovalScore::add(const Scan& scan, std::span<const std::uint8_t> labels) {
     // A removed artefact counts for the kind of artefact it truly is, whichever step removed it.
     if (truth == PointCode::kJump) {
       ++jump_.truth;
-      jump_.truth_removed += isRemoved(labels[i]);
+      jump_.truth_removed += isRemovedCode(labels[i]);
     } else if (truth == PointCode::kMisdetected) {
       ++misdetected_.truth;
-      misdetected_.truth_removed += isRemoved(labels[i]);
+      misdetected_.truth_removed += isRemovedCode(labels[i]);
     } else if (truth == PointCode::kValid) {
       ++valid_truth_;
-      valid_deleted_ += isRemoved(labels[i]);
+      valid_deleted_ += isRemovedCode(labels[i]);
       const std::size_t band = rangeBand(scan.ranges[i]);
       ++valid_truth_by_band_[band];
-      valid_deleted_by_band_[band] += isRemoved(labels[i]);
+      valid_deleted_by_band_[band] += isRemovedCode(labels[i]);
     }
     RemovalClassScore* by_label = label == PointCode::kJump ? &jump_
                                   : label == PointCode::kMisdetected ? &misdetected_
                                                                      : nullptr;
     if (by_label) {
       ++by_label->labelled;
-      by_label->labelled_artefact += isRemoved(scan.truth[i]);
+      by_label->labelled_artefact += isRemovedCode(scan.truth[i]);
     }
   }
   for (std::uint32_t beam : scan.thin_leg_beams) {

@@ -7,6 +7,7 @@
 #include "scanfilter/png_image.hpp"
 #include "scanfilter/point_code.hpp"
 #include "scanfilter/scan_geometry.hpp"
+#include "scanfilter/world_viewport.hpp"
 
 namespace scanfilter {
 
@@ -33,15 +34,6 @@ Rgb colourOf(std::uint8_t code) {
   }
 }
 
-// World metres to panel pixels, y up.
-struct Viewport {
-  Eigen::Vector2d min;
-  double scale;  // pixels per metre
-  int height;
-  int px(const Eigen::Vector2d& p) const { return static_cast<int>((p.x() - min.x()) * scale); }
-  int py(const Eigen::Vector2d& p) const { return height - 1 - static_cast<int>((p.y() - min.y()) * scale); }
-};
-
 }  // namespace
 
 void ScanRenderer::add(const Scan& scan, const SensorInfo& sensor, std::span<const std::uint8_t> labels) {
@@ -57,16 +49,11 @@ void ScanRenderer::add(const Scan& scan, const SensorInfo& sensor, std::span<con
 void ScanRenderer::save(const std::string& path, const RenderOptions& options) const { draw(options).save(path); }
 
 PngImage ScanRenderer::draw(const RenderOptions& options) const {
-  Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector2d hi = -lo;
-  for (const auto& pt : points_) lo = lo.cwiseMin(pt.p), hi = hi.cwiseMax(pt.p);
-  for (const auto& t : trajectory_) lo = lo.cwiseMin(t), hi = hi.cwiseMax(t);
-  if (!std::isfinite(lo.x())) lo = hi = Eigen::Vector2d::Zero();
-  const Eigen::Vector2d extent = (hi - lo).cwiseMax(1e-3);
-  const double scale = options.panel_pixels / std::max(extent.x(), extent.y());
-  const int pw = static_cast<int>(extent.x() * scale) + 1;
-  const int ph = static_cast<int>(extent.y() * scale) + 1;
-  const Viewport view{lo, scale, ph};
+  WorldBounds bounds;
+  for (const auto& pt : points_) bounds.include(pt.p);
+  for (const auto& t : trajectory_) bounds.include(t);
+  const WorldViewport view = bounds.viewport(options.panel_pixels);
+  const int pw = view.width(), ph = view.height();
 
   const auto drawPanel = [&](bool after) {
     PngImage panel(pw, ph, kBackground);
@@ -77,8 +64,7 @@ PngImage ScanRenderer::draw(const RenderOptions& options) const {
     for (int pass = 0; pass < 2; ++pass) {
       for (const auto& pt : points_) {
         const std::uint8_t code = after ? pt.label : pt.truth;
-        const bool removed = code == static_cast<std::uint8_t>(PointCode::kJump) ||
-                             code == static_cast<std::uint8_t>(PointCode::kMisdetected);
+        const bool removed = isRemovedCode(code);
         if ((pass == 0) != removed) continue;
         const Rgb colour = code == kUnknown ? kUnlabelledColour : colourOf(code);
         if (removed) panel.disc(view.px(pt.p), view.py(pt.p), 1, colour);
@@ -100,16 +86,12 @@ PngImage ScanRenderer::draw(const RenderOptions& options) const {
 
   // Legend.
   const int ly = ph + kTitleHeight + kMargin;
-  int lx = kMargin;
-  const std::pair<Rgb, const char*> entries[] = {{kValidColour, "VALID"},
-                                                 {kJumpColour, "JUMP"},
-                                                 {kMisdetectedColour, "MISDETECTED"},
-                                                 {kTrajectoryColour, "SENSOR PATH"}};
-  for (const auto& [colour, name] : entries) {
-    image.fillRect(lx, ly, lx + 14, ly + 14, colour);
-    image.text(lx + 22, ly, name, kTextColour, kTextScale);
-    lx += 40 + static_cast<int>(std::string(name).size()) * 6 * kTextScale;
-  }
+  image.legend(kMargin, ly,
+               {{kValidColour, "VALID"},
+                {kJumpColour, "JUMP"},
+                {kMisdetectedColour, "MISDETECTED"},
+                {kTrajectoryColour, "SENSOR PATH"}},
+               kTextColour, kTextScale);
   return image;
 }
 

@@ -76,6 +76,17 @@ void worldPoints(const Scan& scan, const SensorInfo& sensor, std::vector<Eigen::
   worldPoints(scan, sensor, table, out);
 }
 
+std::optional<Eigen::Vector2d> localSurfaceDirection(const std::vector<Eigen::Vector2d>& points, std::size_t i,
+                                                     double tolerance) {
+  if (i == 0 || i + 1 >= points.size()) return std::nullopt;
+  const Eigen::Vector2d& a = points[i - 1];
+  const Eigen::Vector2d& b = points[i + 1];
+  if (std::isnan(a.x()) || std::isnan(b.x()) || std::isnan(points[i].x())) return std::nullopt;
+  const Eigen::Vector2d chord = b - a;
+  if (chord.squaredNorm() == 0.0 || distanceToLine(points[i], a, b) > tolerance) return std::nullopt;
+  return chord;
+}
+
 bool isFullTurn(const Scan& scan) {
   // Half a beam of slack: 360 beams of exactly 1° cover the turn.
   const double covered = static_cast<double>(scan.size()) * std::abs(scan.angle_increment);

@@ -2,6 +2,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace scanfilter {
@@ -22,6 +23,8 @@ class PngImage {
   void line(int x0, int y0, int x1, int y1, Rgb colour);
   // Upper-case text in a 5x7 pixel font, `scale` pixels per font pixel.
   void text(int x, int y, const std::string& s, Rgb colour, int scale = 2);
+  // A row of colour swatches, each followed by its name.
+  void legend(int x, int y, const std::vector<std::pair<Rgb, std::string>>& entries, Rgb text_colour, int scale = 2);
   // Pastes another image with its top-left corner at (x, y).
   void paste(const PngImage& other, int x, int y);
 

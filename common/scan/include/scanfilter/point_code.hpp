@@ -15,6 +15,12 @@ inline constexpr int kPointCodeCount = 4;
 
 inline constexpr bool isValidPointCode(int code) { return code >= 0 && code < kPointCodeCount; }
 
+// True for the codes of a beam a filter removed (by either step).
+inline constexpr bool isRemovedCode(std::uint8_t code) {
+  return code == static_cast<std::uint8_t>(PointCode::kJump) ||
+         code == static_cast<std::uint8_t>(PointCode::kMisdetected);
+}
+
 inline constexpr const char* pointCodeName(PointCode code) {
   switch (code) {
     case PointCode::kValid: return "valid";

@@ -1,4 +1,5 @@
 #pragma once
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -58,6 +59,15 @@ void worldPoints(const Scan& scan, const SensorInfo& sensor, std::vector<Eigen::
 
 // Distance of p from the line through a and b (from a when they coincide).
 double distanceToLine(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
+
+// The direction of the surface at point i of a scan's points (world or sensor
+// frame, NaN where no return): the chord from its previous to its next
+// neighbour, when both are returns and point i lies within `tolerance` of
+// that chord, so one surface runs through all three. Unset at the ends of the
+// scan, beside a missing return and where the three points bend (a corner, a
+// depth step, a mixed return between two surfaces).
+std::optional<Eigen::Vector2d> localSurfaceDirection(const std::vector<Eigen::Vector2d>& points, std::size_t i,
+                                                     double tolerance);
 
 // True when the scan's beams cover a whole turn, so the first and last beams
 // are neighbours (the seam).
