@@ -1,7 +1,7 @@
 // The accuracy table of docs/accuracy.md: every built-in scene, held-out
 // seeds, the shipped defaults beside the paper-literal reading and step 1
 // alone; one table per sensor asked for (default: each scene's own sensor).
-//   build/bench/accuracy_table [--seeds 2,3] [--config-dir config] [--sensor tof,triangulation]
+//   build/bench/accuracy_table [--seeds 2,3] [--config-dir config] [--sensor tof,triangulation] [--max-frames N]
 #include <cstdint>
 #include <cstdio>
 #include <exception>
@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   std::vector<std::uint64_t> seeds = {2, 3};
   std::string config_dir = SCANFILTER_SOURCE_DIR "/config";
   std::vector<std::string> sensors;
+  int max_frames = 0;
   CLI::App app{"The accuracy table of docs/accuracy.md: the shipped defaults, the paper-literal reading and step 1 "
                "alone on every built-in scene"};
   app.add_option("--seeds", seeds, "simulator seeds scored (held out from the tuning seed)")
@@ -45,6 +46,9 @@ int main(int argc, char** argv) {
                  "sensor presets (config/sensors: tof, triangulation) or preset files, one table each; default: each "
                  "scene's own sensor")
       ->delimiter(',');
+  app.add_option("--max-frames", max_frames, "scans per simulated log (0: the whole trajectory)")
+      ->capture_default_str()
+      ->check(bench::kFrameCountCheck);
   CLI11_PARSE(app, argc, argv);
   if (sensors.empty()) sensors.emplace_back();  // the scenes' own
 
@@ -73,7 +77,7 @@ int main(int argc, char** argv) {
       std::vector<accuracy::LabelledLog> all;
       for (const auto& scene : sim::builtinSceneNames()) {
         std::vector<accuracy::LabelledLog> logs;
-        for (auto seed : seeds) logs.push_back(accuracy::simulateScene(scene, seed, 0, seen_by));
+        for (auto seed : seeds) logs.push_back(accuracy::simulateScene(scene, seed, max_frames, seen_by));
         for (const auto& [name, config] : filters) row(scene, name, accuracy::scoreFilter(config, logs).score);
         all.insert(all.end(), logs.begin(), logs.end());
       }
