@@ -70,15 +70,35 @@ TEST(SimulateBuiltinScenes, EverySceneAtEverySeedSceneBySceneAsTheVariantAsks) {
   }
 }
 
-TEST(SimulateScene, OdometryRewritesThePosesOnlyWhenAsked) {
+// Drift is on by default in the simulated logs (the scene's own,
+// sim::kDefaultOdometryDrift); a variant replaces it, OdometryDrift{} with the
+// true poses. The scans and their truth stay the same.
+TEST(SimulateScene, OdometryIsTheScenesUnlessTheVariantReplacesIt) {
   constexpr int kFrames = 20;
-  const auto truth = simulateScene("hall", 1, kFrames);
-  SceneVariant drifting;
+  const auto scenes_own = simulateScene("hall", 1, kFrames);
+  SceneVariant true_poses, drifting;
+  true_poses.odometry = sim::OdometryDrift{};
   drifting.odometry = sim::OdometryDrift{0.05, 0.0};
+  const auto truth = simulateScene("hall", 1, kFrames, true_poses);
   const auto odometry = simulateScene("hall", 1, kFrames, drifting);
-  EXPECT_EQ(truth.scans.back().pose.x, simulateScene("hall", 1, kFrames).scans.back().pose.x) << "repeatable";
+  EXPECT_EQ(scenes_own.scans.back().pose.x, simulateScene("hall", 1, kFrames).scans.back().pose.x) << "repeatable";
+  EXPECT_NE(truth.scans.back().pose.x, scenes_own.scans.back().pose.x) << "the default drifts";
   EXPECT_NE(truth.scans.back().pose.x, odometry.scans.back().pose.x);
+  EXPECT_NE(scenes_own.scans.back().pose.x, odometry.scans.back().pose.x);
   EXPECT_EQ(truth.scans.back().truth, odometry.scans.back().truth) << "the same scans, other poses";
+  EXPECT_EQ(truth.scans.back().truth, scenes_own.scans.back().truth);
+}
+
+TEST(SimulateScene, AnySensorPresetOnAnyScene) {
+  SceneVariant tof;
+  tof.sensor = "tof";
+  const auto log = simulateScene("office", 1, 2, tof);
+  EXPECT_EQ(log.name, "office tof seed 1");
+  ASSERT_EQ(log.scans.size(), 2u);
+  EXPECT_EQ(log.scans.front().size(), 1440u);
+  EXPECT_DOUBLE_EQ(log.sensor.range_max, 20.0);
+  EXPECT_DOUBLE_EQ(log.sensor.angular_accuracy_deg, 0.25);
+  EXPECT_EQ(simulateScene("office", 1, 2).scans.front().size(), 360u) << "without a preset, the scene's own sensor";
 }
 
 TEST(ScoreFilter, OurConfigScoresAsOurFamilyAtItsDefaults) {

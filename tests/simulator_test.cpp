@@ -68,6 +68,18 @@ TEST(Simulator, MisdetectionsLieBehindTheSmoothWall) {
   EXPECT_GT(static_cast<double>(behind) / static_cast<double>(total), 0.9);
 }
 
+TEST(Simulator, OdometryDriftIsOnUnlessTheSceneTurnsItOff) {
+  const std::string plan = "walls:\n  - {points: [[0, 0], [1, 0]]}\ntrajectory: {waypoints: [[0,0],[1,1]]}\n";
+  const sim::Scene drifting = sim::parseScene(plan, "s.yaml");
+  EXPECT_EQ(drifting.odometry.scale_error, sim::kDefaultOdometryDrift.scale_error);
+  EXPECT_EQ(drifting.odometry.heading_drift_per_m, sim::kDefaultOdometryDrift.heading_drift_per_m);
+  const sim::Scene exact = sim::parseScene(plan + "odometry: {scale_error: 0, heading_drift_deg_per_m: 0}\n", "s.yaml");
+  EXPECT_TRUE(exact.odometry.none());
+  const sim::Scene more = sim::parseScene(plan + "odometry: {heading_drift_deg_per_m: 2}\n", "s.yaml");
+  EXPECT_DOUBLE_EQ(more.odometry.heading_drift_per_m, 2.0 * M_PI / 180.0);
+  EXPECT_EQ(more.odometry.scale_error, sim::kDefaultOdometryDrift.scale_error) << "a key left out keeps its default";
+}
+
 TEST(SimulatorErrors, BadSceneNamesFileLineAndKey) {
   try {
     sim::parseScene("walls:\n  - {points: [[0, 0], [1, 0]], material: velvet}\ntrajectory: {waypoints: [[0,0],[1,1]]}\n", "s.yaml");

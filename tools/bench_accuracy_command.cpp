@@ -32,11 +32,17 @@ constexpr int kFigurePanelPixels = 420;
 
 using Logs = std::vector<sim::LabelledLog>;
 
-// Every simulated log of the comparison, the unchanged scenes too, goes
-// through dead reckoning, so a drift variant differs from the unchanged
-// scenes by its drift alone.
+// The unchanged scenes log odometry with the scenes' own drift
+// (sim::kDefaultOdometryDrift); one variant logs the true poses instead.
 constexpr sim::OdometryDrift kNoDrift{};
-const SceneVariant kUnchangedScenes{"unchanged scenes", 1.0, 0, kNoDrift};
+
+// The scenes as they are, seen by the chosen sensor (empty: their own).
+SceneVariant unchangedScenes(const std::string& sensor) {
+  SceneVariant variant;
+  variant.name = "unchanged scenes";
+  variant.sensor = sensor;
+  return variant;
+}
 
 sim::LabelledLog readLabelledLog(const std::string& path) {
   auto source = openScanSource(path);
@@ -133,14 +139,18 @@ void framesFigure(const std::string& path, const sim::LabelledLog& log, const st
 // comparison ran on them (the first variant is exactly those logs), else null.
 void robustnessTables(std::ostream& out, const std::vector<TunedFamily>& tuned, const BenchAccuracyOptions& options,
                       const std::vector<ScoredFilter>* as_tested) {
-  const std::vector<SceneVariant> variants = {
-      kUnchangedScenes,
-      {"range noise x2", 2.0, 0, kNoDrift},
-      {"0.5° resolution (720 beams)", 1.0, 720, kNoDrift},
-      {"0.25° resolution (1440 beams)", 1.0, 1440, kNoDrift},
-      {"odometry drift 1 %, 0.5°/m", 1.0, 0, sim::OdometryDrift{0.01, 0.5 * M_PI / 180.0}},
-      {"odometry drift 3 %, 2°/m", 1.0, 0, sim::OdometryDrift{0.03, 2.0 * M_PI / 180.0}},
+  std::vector<SceneVariant> variants;
+  const auto add = [&](const std::string& name) -> SceneVariant& {
+    variants.push_back(unchangedScenes(options.sensor));
+    variants.back().name = name;
+    return variants.back();
   };
+  add("unchanged scenes");
+  add("range noise x2").noise_factor = 2.0;
+  add("0.5° resolution (720 beams)").beams = 720;
+  add("0.25° resolution (1440 beams)").beams = 1440;
+  add("true poses (no odometry drift)").odometry = kNoDrift;
+  add("odometry drift 3 %, 2°/m").odometry = sim::OdometryDrift{0.03, 2.0 * M_PI / 180.0};
   std::ostringstream ours, all;
   ours << "| variant | jump P / R / F1 | misdetected P / R / F1 | valid deleted | thin legs kept | µs / scan |\n"
        << "|---|---|---|---|---|---|\n";
@@ -179,9 +189,9 @@ int runBenchAccuracy(const BenchAccuracyOptions& options) {
   for (const auto& path : options.tune_logs) tune_logs.push_back(readLabelledLog(path));
   for (const auto& path : options.logs) test_logs.push_back(readLabelledLog(path));
   if (tune_logs.empty())
-    tune_logs = accuracy::simulateBuiltinScenes({options.tune_seed}, options.max_frames, kUnchangedScenes);
+    tune_logs = accuracy::simulateBuiltinScenes({options.tune_seed}, options.max_frames, unchangedScenes(options.sensor));
   if (test_logs.empty())
-    test_logs = accuracy::simulateBuiltinScenes(options.test_seeds, options.max_frames, kUnchangedScenes);
+    test_logs = accuracy::simulateBuiltinScenes(options.test_seeds, options.max_frames, unchangedScenes(options.sensor));
 
   std::vector<TunedFamily> tuned;
   std::vector<ScoredFilter> as_default, as_tuned;

@@ -7,6 +7,9 @@ namespace scanfilter::cli {
 
 struct SimulateOptions {
   std::string scene = "hall";
+  std::string sensor;  // preset name or file; empty: the scene's own sensor
+  int beams = 0;       // 0: the sensor's own
+  bool true_poses = false;  // log the true poses instead of drifting odometry
   std::uint64_t seed = 1;
   std::string output;
   int max_frames = 0;  // 0: the whole trajectory
@@ -60,6 +63,7 @@ struct BenchAccuracyOptions {
   std::string output_dir;   // figures and accuracy-comparison.md; empty: stdout only
   bool robustness = true;
   int max_frames = 0;  // per simulated log, 0: whole trajectory
+  std::string sensor;  // sensor preset of the simulated logs; empty: each scene's own
 };
 
 struct ReportRealOptions {

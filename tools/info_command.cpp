@@ -18,7 +18,7 @@ int runInfo(const InfoOptions& options) {
   Stamp first, last;
   double path = 0.0;
   std::size_t min_beams = SIZE_MAX, max_beams = 0;
-  std::array<std::size_t, kPointCodeCount> label_counts{};
+  std::array<std::size_t, kPointCodeCount> label_counts{}, truth_counts{};
   Pose2 previous;
   ScanRecord record;
   while (source->next(record)) {
@@ -34,6 +34,7 @@ int runInfo(const InfoOptions& options) {
     for (std::size_t i = 0; i < s.size(); ++i) returns += s.hasReturn(i);
     labelled += !s.labels.empty();
     for (auto code : s.labels) ++label_counts[code];
+    for (auto code : s.truth) ++truth_counts[code];
     with_truth += !s.truth.empty();
   }
   std::cout << "file:      " << options.input << "\n"
@@ -48,12 +49,14 @@ int runInfo(const InfoOptions& options) {
             << "stamps:    " << source->stampRegressions() << " earlier than the scan before (kept in file order)\n"
             << "returns:   " << returns << " of " << beams << " beams\n"
             << "truth:     " << with_truth << " scans, labels: " << labelled << " scans\n";
-  if (labelled > 0) {
-    std::cout << "labels:   ";
+  const auto counts = [](const char* title, const std::array<std::size_t, kPointCodeCount>& n) {
+    std::cout << title;
     for (int c = 0; c < kPointCodeCount; ++c)
-      std::cout << " " << pointCodeName(static_cast<PointCode>(c)) << "=" << label_counts[static_cast<std::size_t>(c)];
+      std::cout << " " << pointCodeName(static_cast<PointCode>(c)) << "=" << n[static_cast<std::size_t>(c)];
     std::cout << "\n";
-  }
+  };
+  if (with_truth > 0) counts("truth by code:", truth_counts);
+  if (labelled > 0) counts("labels:   ", label_counts);
   return 0;
 }
 

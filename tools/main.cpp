@@ -23,6 +23,9 @@ int main(int argc, char** argv) {
   SimulateOptions sim;
   auto* simulate = app.add_subcommand("simulate", "Simulate a labelled scan log of a scene");
   simulate->add_option("--scene", sim.scene, "built-in scene name (hall, home, office) or a scene YAML file")->capture_default_str();
+  simulate->add_option("--sensor", sim.sensor, "sensor preset (tof, triangulation) or a sensor YAML file; default: the scene's own sensor");
+  simulate->add_option("--beams", sim.beams, "beams a turn (angular step 360°/N); default: the sensor's own")->check(CLI::PositiveNumber);
+  simulate->add_flag("--true-poses", sim.true_poses, "log the true poses (default: odometry with the scene's drift, 1 %, 0.5°/m)");
   simulate->add_option("--seed", sim.seed, "random seed: same scene and seed, same scans")->capture_default_str();
   simulate->add_option("--max-frames", sim.max_frames, "stop after this many scans (0: whole trajectory)")->check(CLI::NonNegativeNumber);
   simulate->add_option("-o,--output", sim.output, "output scan log (.scanlog.jsonl)")->required();
@@ -75,6 +78,7 @@ int main(int argc, char** argv) {
   ben->add_option("--budget", bench.budget, "sweep evaluations per filter")->capture_default_str()->check(CLI::Range(1, 10000));
   ben->add_option("--config", bench.config, "our filter's config YAML (default: built-in defaults)")->check(CLI::ExistingFile);
   ben->add_option("-o,--output-dir", bench.output_dir, "write accuracy-comparison.md and the PNG figures here");
+  ben->add_option("--sensor", bench.sensor, "sensor preset of the simulated logs (tof, triangulation, or a file; default: each scene's own)");
   ben->add_option("--max-frames", bench.max_frames, "scans per simulated log (0: whole trajectory)")->check(CLI::NonNegativeNumber);
   ben->add_flag("!--no-robustness", bench.robustness, "skip the robustness variants (noise, resolution, drift)");
 

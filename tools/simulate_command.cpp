@@ -3,11 +3,14 @@
 #include "commands.hpp"
 #include "scanfilter/scan_log_writer.hpp"
 #include "scanfilter/sim/scan_simulator.hpp"
+#include "scanfilter/sim/sensor_preset.hpp"
 
 namespace scanfilter::cli {
 
 int runSimulate(const SimulateOptions& options) {
-  sim::ScanSimulator simulator(sim::findScene(options.scene), options.seed);
+  sim::Scene scene = sim::sceneWithSensor(options.scene, options.sensor, options.beams);
+  if (options.true_poses) scene.odometry = {};
+  sim::ScanSimulator simulator(std::move(scene), options.seed);
   ScanLogWriter writer(options.output, simulator.header());
   ScanRecord record;
   int frames = 0;
@@ -16,8 +19,7 @@ int runSimulate(const SimulateOptions& options) {
     ++frames;
   }
   writer.close();
-  std::cout << "simulated " << frames << " scans of scene '" << simulator.scene().name << "' (seed "
-            << options.seed << ") -> " << options.output << "\n";
+  std::cout << "simulated " << frames << " scans (" << simulator.header().source << ") -> " << options.output << "\n";
   return 0;
 }
 

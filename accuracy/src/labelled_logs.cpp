@@ -1,16 +1,17 @@
 #include "scanfilter/accuracy/labelled_logs.hpp"
 
+#include "scanfilter/sim/sensor_preset.hpp"
+
 namespace scanfilter::accuracy {
 
 LabelledLog simulateScene(const std::string& scene_name, std::uint64_t seed, int max_frames,
                           const SceneVariant& variant) {
-  sim::Scene scene = sim::findScene(scene_name);
+  sim::Scene scene = sim::sceneWithSensor(scene_name, variant.sensor, variant.beams);
   scene.lidar.noise_sigma_base *= variant.noise_factor;
   scene.lidar.noise_sigma_quadratic *= variant.noise_factor;
-  if (variant.beams > 0) scene.lidar.beams = variant.beams;
-  auto log = sim::simulateLog(scene, seed, scene_name + " seed " + std::to_string(seed), max_frames);
-  if (variant.odometry) sim::applyOdometryDrift(log.scans, *variant.odometry);
-  return log;
+  if (variant.odometry) scene.odometry = *variant.odometry;
+  const std::string sensor = variant.sensor.empty() ? "" : " " + scene.sensor_preset;
+  return sim::simulateLog(scene, seed, scene_name + sensor + " seed " + std::to_string(seed), max_frames);
 }
 
 std::vector<LabelledLog> simulateBuiltinScenes(const std::vector<std::uint64_t>& seeds, int max_frames,

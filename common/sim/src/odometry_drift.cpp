@@ -1,29 +1,43 @@
 #include "scanfilter/sim/odometry_drift.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 namespace scanfilter::sim {
 
-void applyOdometryDrift(std::vector<Scan>& scans, const OdometryDrift& drift) {
-  if (scans.empty()) return;
-  Pose2 previous_true = scans.front().pose;
-  Pose2 odom = previous_true;
-  for (auto& scan : scans) {
-    const Pose2 now = scan.pose;
-    // The step in the previous true pose's frame: what the wheels measured.
-    const double dx = now.x - previous_true.x, dy = now.y - previous_true.y;
-    const double c = std::cos(previous_true.theta), s = std::sin(previous_true.theta);
-    const double forward = c * dx + s * dy, lateral = -s * dx + c * dy;
-    const double dtheta = std::remainder(now.theta - previous_true.theta, 2.0 * M_PI);
-    const double distance = std::hypot(dx, dy);
-    const double k = 1.0 + drift.scale_error;
-    const double oc = std::cos(odom.theta), os = std::sin(odom.theta);
-    odom.x += k * (oc * forward - os * lateral);
-    odom.y += k * (os * forward + oc * lateral);
-    odom.theta += dtheta + drift.heading_drift_per_m * distance;
-    previous_true = now;
-    scan.pose = odom;
+std::string describe(const OdometryDrift& drift) {
+  if (drift.none()) return "true poses";
+  char text[64];
+  std::snprintf(text, sizeof text, "odometry drift %g %%, %g°/m", 100.0 * drift.scale_error,
+                drift.heading_drift_per_m * 180.0 / std::numbers::pi);
+  return text;
+}
+
+Pose2 DeadReckoning::next(const Pose2& now) {
+  if (!previous_true_) {
+    previous_true_ = now;
+    odometry_ = now;
+    return odometry_;
   }
+  const Pose2& before = *previous_true_;
+  // The step in the previous true pose's frame: what the wheels measured.
+  const double dx = now.x - before.x, dy = now.y - before.y;
+  const double c = std::cos(before.theta), s = std::sin(before.theta);
+  const double forward = c * dx + s * dy, lateral = -s * dx + c * dy;
+  const double dtheta = std::remainder(now.theta - before.theta, 2.0 * std::numbers::pi);
+  const double distance = std::hypot(dx, dy);
+  const double k = 1.0 + drift_.scale_error;
+  const double oc = std::cos(odometry_.theta), os = std::sin(odometry_.theta);
+  odometry_.x += k * (oc * forward - os * lateral);
+  odometry_.y += k * (os * forward + oc * lateral);
+  odometry_.theta += dtheta + drift_.heading_drift_per_m * distance;
+  previous_true_ = now;
+  return odometry_;
+}
+
+void applyOdometryDrift(std::vector<Scan>& scans, const OdometryDrift& drift) {
+  DeadReckoning odometry(drift);
+  for (auto& scan : scans) scan.pose = odometry.next(scan.pose);
 }
 
 }  // namespace scanfilter::sim

@@ -1,17 +1,21 @@
 #include "scanfilter/sim/scan_simulator.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <numeric>
 
 #include "scanfilter/point_code.hpp"
 #include "scanfilter/scan_geometry.hpp"
+#include "scanfilter/sim/specular_return.hpp"
 
 namespace scanfilter::sim {
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kDegToRad = std::numbers::pi / 180.0;
+constexpr double kMradToRad = 1e-3;
 // Secondary rays start this far off the surface so they do not hit it again.
 constexpr double kSurfaceOffset = 1e-6;
 // A displaced return counts as a jump point beyond this many σ of noise.
@@ -21,8 +25,11 @@ double wrapAngle(double a) { return std::atan2(std::sin(a), std::cos(a)); }
 }  // namespace
 
 ScanSimulator::ScanSimulator(Scene scene, std::uint64_t seed)
-    : scene_(std::move(scene)), caster_(scene_), rng_(seed) {
-  header_.source = "scanfilter simulate: scene " + scene_.name + ", seed " + std::to_string(seed);
+    : scene_(std::move(scene)), caster_(scene_), odometry_(scene_.odometry), rng_(seed) {
+  header_.source = "scanfilter simulate: scene " + scene_.name +
+                   (scene_.sensor_preset.empty() ? "" : ", sensor " + scene_.sensor_preset) + ", " +
+                   std::to_string(scene_.lidar.beams) + " beams, " + describe(scene_.odometry) + ", seed " +
+                   std::to_string(seed);
   header_.sensor = scene_.sensor;
   planPoses();
 }
@@ -60,81 +67,89 @@ double ScanSimulator::sigma(double range) const {
   return scene_.lidar.noise_sigma_base + scene_.lidar.noise_sigma_quadratic * range * range;
 }
 
-std::optional<double> ScanSimulator::specularGhost(const Eigen::Vector2d& dir, const RayHit& hit) {
+double ScanSimulator::directReturn(const Eigen::Vector2d& dir, const RayHit& hit) const {
+  if (hit.material == Material::kRough) return 1.0;
+  const double incidence = std::acos(std::min(1.0, std::abs(dir.dot(hit.normal))));
   const LidarModel& m = scene_.lidar;
-  const double reach = scene_.sensor.range_max;
-  const double p_specular = hit.material == Material::kGlass ? m.glass_specular_probability
-                                                             : m.smooth_specular_probability;
-  const double u = uniform_(rng_);
-  Eigen::Vector2d onward;
-  if (u < p_specular) {
-    onward = dir - 2.0 * dir.dot(hit.normal) * hit.normal;  // mirror path
-  } else if (hit.material == Material::kGlass && u < p_specular + m.glass_transmit_probability) {
+  return directReturnProbability(hit.material == Material::kGlass ? m.glass : m.smooth, incidence);
+}
+
+std::optional<double> ScanSimulator::specularPath(const Eigen::Vector2d& dir, const RayHit& hit) {
+  if (chance(directReturn(dir, hit))) return std::nullopt;
+  const double incidence = std::acos(std::min(1.0, std::abs(dir.dot(hit.normal))));
+  Eigen::Vector2d onward = dir - 2.0 * dir.dot(hit.normal) * hit.normal;  // mirror path
+  if (hit.material == Material::kGlass && !chance(paneReflectance(incidence, scene_.lidar.glass_refractive_index)))
     onward = dir;  // straight through the pane
-  } else {
-    return std::nullopt;
-  }
-  const auto second = caster_.cast(hit.point + kSurfaceOffset * onward, onward, reach);
+  const auto second = caster_.cast(hit.point + kSurfaceOffset * onward, onward, scene_.sensor.range_max);
   // The sensor reports the whole path length along the outgoing beam.
   if (!second) return kNaN;
   return hit.range + second->range;
+}
+
+const std::vector<PartialReturn>& ScanSimulator::footprint(const Eigen::Vector2d& origin, double angle) {
+  // Rays spread over the spot (stratified, so the fraction on each surface is
+  // sampled evenly) and, in an independently shuffled order, over the angle
+  // the head turns while the receiver integrates (a Latin hypercube).
+  const LidarModel& m = scene_.lidar;
+  const int n = m.footprint_rays;
+  const double divergence = m.beam_divergence_mrad * kMradToRad;
+  const double sweep = m.exposure_sweep * 2.0 * std::numbers::pi / m.beams;
+  const Eigen::Vector2d across(-std::sin(angle), std::cos(angle));
+  sweep_slots_.resize(static_cast<std::size_t>(n));
+  std::iota(sweep_slots_.begin(), sweep_slots_.end(), 0);
+  std::shuffle(sweep_slots_.begin(), sweep_slots_.end(), rng_);
+  parts_.clear();
+  for (int k = 0; k < n; ++k) {
+    const double s = (k + uniform_(rng_)) / n - 0.5;
+    const double t = (sweep_slots_[static_cast<std::size_t>(k)] + uniform_(rng_)) / n - 0.5;
+    const double a = angle + s * divergence + t * sweep;
+    const Eigen::Vector2d d(std::cos(a), std::sin(a));
+    // Light from beyond range_max is too weak to count.
+    const auto hit = caster_.cast(origin + s * m.exit_aperture * across, d, scene_.sensor.range_max);
+    if (hit) parts_.push_back({hit->range, directReturn(d, *hit)});
+  }
+  return parts_;
+}
+
+double ScanSimulator::deformation(const Eigen::Vector2d& dir, const RayHit& hit) {
+  const LidarModel& m = scene_.lidar;
+  double shift = 0.0;
+  const double incidence = std::acos(std::min(1.0, std::abs(dir.dot(hit.normal))));
+  if (incidence > m.grazing_angle_deg * kDegToRad && chance(m.grazing_probability)) shift += symmetric(m.grazing_error_max);
+  if (caster_.distanceToCorner(hit.point) < m.junction_radius && chance(m.junction_probability))
+    shift += symmetric(m.junction_error_max);
+  return shift;
 }
 
 ScanSimulator::Beam ScanSimulator::simulateBeam(const Eigen::Vector2d& origin, double angle) {
   const LidarModel& m = scene_.lidar;
   const SensorInfo& sensor = scene_.sensor;
   const Eigen::Vector2d dir(std::cos(angle), std::sin(angle));
-  const auto hit = caster_.cast(origin, dir, sensor.range_max * 2.0);
+  const auto hit = caster_.cast(origin, dir, sensor.range_max);
   const Beam no_return{kNaN, static_cast<std::uint8_t>(PointCode::kNoReturn), false};
-  if (!hit || hit->range > sensor.range_max) return no_return;
-  const double truth_range = hit->range;
+  if (!hit) return no_return;
 
-  double range = truth_range;
-  bool displaced = false;
-  std::uint8_t truth = static_cast<std::uint8_t>(PointCode::kValid);
+  double range = hit->range;
+  auto truth = static_cast<std::uint8_t>(PointCode::kValid);
   std::optional<double> ghost;
-  if (hit->material != Material::kRough) ghost = specularGhost(dir, *hit);
+  if (hit->material != Material::kRough) ghost = specularPath(dir, *hit);
   if (ghost) {
     if (std::isnan(*ghost)) return no_return;
     range = *ghost;
-    if (range - truth_range > m.jump_min_error) truth = static_cast<std::uint8_t>(PointCode::kMisdetected);
+    if (range - hit->range > m.jump_min_error) truth = static_cast<std::uint8_t>(PointCode::kMisdetected);
   } else {
     if (hit->material == Material::kRough && chance(m.dropout_probability)) return no_return;
-    // Mixed return: the footprint's two edges see surfaces at different depths.
-    const double half_spot = 0.5 * m.spot_width_deg * kDegToRad;
-    double near = truth_range;
-    double far = truth_range;
-    for (double offset : {-half_spot, half_spot}) {
-      const Eigen::Vector2d d(std::cos(angle + offset), std::sin(angle + offset));
-      const auto edge = caster_.cast(origin, d, sensor.range_max * 2.0);
-      if (!edge) continue;  // nothing behind: no light to mix with
-      near = std::min(near, edge->range);
-      far = std::max(far, edge->range);
-    }
-    if (far - near > m.edge_gap && chance(m.mixed_probability)) {
-      range = near + uniform_(rng_) * (far - near);
-      displaced = true;
-    }
-    // Deformed spot at grazing incidence and at wall junctions.
-    const double incidence = std::acos(std::min(1.0, std::abs(dir.dot(hit->normal))));
-    if (incidence > m.grazing_angle_deg * kDegToRad && chance(m.grazing_probability)) {
-      range += symmetric(m.grazing_error_max);
-      displaced = true;
-    }
-    if (caster_.distanceToCorner(hit->point) < m.junction_radius && chance(m.junction_probability)) {
-      range += symmetric(m.junction_error_max);
-      displaced = true;
-    }
-  }
-  range += sigma(truth_range) * normal_(rng_);
-  range = std::round(range / m.range_resolution) * m.range_resolution;
-  // A displaced return is a jump point when it lies on no surface at all: one
-  // that slid along its own wall (grazing) or onto another one is still valid.
-  if (displaced) {
+    const double mixed = mixRanges(m.mixing, footprint(origin, angle));
+    if (!std::isnan(mixed)) range = mixed;
+    range += deformation(dir, *hit);
+    // A return is a jump point when it lies on no surface at all: one that
+    // slid along its own wall (grazing) or onto another one is still valid.
     const double off_surface = caster_.distanceToSurface(origin + range * dir);
-    if (off_surface > std::max(m.jump_min_error, kJumpSigmas * sigma(truth_range)))
+    if (off_surface > std::max(m.jump_min_error, kJumpSigmas * sigma(range)))
       truth = static_cast<std::uint8_t>(PointCode::kJump);
   }
+  range += sigma(range) * normal_(rng_);
+  range = std::round(range / m.range_resolution) * m.range_resolution;
   if (range < sensor.range_min || range > sensor.range_max) return no_return;
   const bool thin = hit->is_leg && truth == static_cast<std::uint8_t>(PointCode::kValid);
   return {range, truth, thin};
@@ -146,7 +161,8 @@ bool ScanSimulator::next(ScanRecord& record) {
   Scan& scan = record.scan;
   const int beams = scene_.lidar.beams;
   scan.stamp = Stamp::fromSeconds(static_cast<double>(frame_) / scene_.lidar.rate_hz);
-  scan.pose = poses_[frame_++];
+  true_pose_ = poses_[frame_++];
+  scan.pose = true_pose_;  // the beams leave from where the robot really is
   scan.angle_min = 0.0;
   scan.angle_increment = 2.0 * std::numbers::pi / beams;
   scan.ranges.resize(static_cast<std::size_t>(beams));
@@ -158,6 +174,9 @@ bool ScanSimulator::next(ScanRecord& record) {
     scan.truth[i] = beam.truth;
     if (beam.thin_leg) scan.thin_leg_beams.push_back(static_cast<std::uint32_t>(i));
   }
+  // The log holds what odometry recorded; without drift, the true pose
+  // exactly (not re-integrated with rounding).
+  if (!scene_.odometry.none()) scan.pose = odometry_.next(true_pose_);
   return true;
 }
 

@@ -13,20 +13,21 @@ namespace scanfilter::accuracy {
 
 using sim::LabelledLog;
 
-// A built-in scene changed as a robustness test asks; the default changes
-// nothing.
+// A built-in scene changed as a robustness test asks, or seen by another
+// sensor; the default changes nothing.
 struct SceneVariant {
   std::string name;
   double noise_factor = 1.0;  // scales both range-noise terms
-  int beams = 0;              // 0: the scene's own
-  // Set: the poses as dead reckoning with this drift records them (with zero
-  // drift they still differ from the true poses by rounding, which can flip
-  // a label). Unset: the true poses.
+  int beams = 0;              // 0: the sensor's own
+  // Set: the odometry drift the logged poses carry in place of the scene's
+  // own (sim::OdometryDrift{}: the true poses). Unset: the scene's own,
+  // sim::kDefaultOdometryDrift unless the scene file says otherwise.
   std::optional<sim::OdometryDrift> odometry;
+  std::string sensor;  // sensor preset (config/sensors) or file; empty: the scene's own
 };
 
-// One built-in scene at one seed, named "SCENE seed N"; max_frames 0 keeps the
-// whole trajectory.
+// One built-in scene at one seed, named "SCENE seed N" ("SCENE SENSOR seed N"
+// with a sensor preset); max_frames 0 keeps the whole trajectory.
 LabelledLog simulateScene(const std::string& scene, std::uint64_t seed, int max_frames = 0,
                           const SceneVariant& variant = {});
 

@@ -4,16 +4,18 @@
 #include <vector>
 
 #include "scanfilter/scan_source.hpp"
+#include "scanfilter/sim/range_mixing.hpp"
 #include "scanfilter/sim/ray_caster.hpp"
 #include "scanfilter/sim/scene.hpp"
 
 namespace scanfilter::sim {
 
-// Labelled scans of a scene along its trajectory: range noise growing with the
-// square of the range (triangulation), mixed returns where the beam footprint
-// straddles a depth step, displaced returns at grazing incidence and at wall
-// junctions (jump points), and specular ghosts behind smooth walls and glass
-// (misdetected points). Same scene and seed, same scans.
+// Labelled scans of a scene along its trajectory, as the scene's LiDAR model
+// (scene.lidar) sees it: mixed returns where the beam's footprint straddles a
+// depth step (jump points when they lie on no surface), specular ghosts and
+// returns through glass (misdetected points), range noise, and the poses as
+// drifting odometry records them (scene.odometry) while the truth comes from
+// the true poses. Same scene and seed, same scans.
 class ScanSimulator final : public ScanSource {
  public:
   ScanSimulator(Scene scene, std::uint64_t seed);
@@ -22,6 +24,9 @@ class ScanSimulator final : public ScanSource {
   bool next(ScanRecord& record) override;
 
   const Scene& scene() const { return scene_; }
+  // Where the robot really was for the scan next() gave last; the scan's
+  // pose is what its odometry recorded.
+  const Pose2& truePose() const { return true_pose_; }
 
  private:
   struct Beam {
@@ -31,9 +36,15 @@ class ScanSimulator final : public ScanSource {
   };
   void planPoses();
   Beam simulateBeam(const Eigen::Vector2d& origin, double angle);
+  // The light coming back from every part of the beam's footprint.
+  const std::vector<PartialReturn>& footprint(const Eigen::Vector2d& origin, double angle);
+  // How well a surface returns light straight back along `dir`.
+  double directReturn(const Eigen::Vector2d& dir, const RayHit& hit) const;
   // The path length of a mirrored or transmitted beam (NaN: it never comes
-  // back), or nothing when the surface returned the beam normally.
-  std::optional<double> specularGhost(const Eigen::Vector2d& dir, const RayHit& hit);
+  // back), or nothing when the surface returned the beam directly.
+  std::optional<double> specularPath(const Eigen::Vector2d& dir, const RayHit& hit);
+  // Random displacement of a deformed spot (grazing incidence, junctions).
+  double deformation(const Eigen::Vector2d& dir, const RayHit& hit);
   double sigma(double range) const;
   bool chance(double p) { return uniform_(rng_) < p; }
   double symmetric(double max) { return (2.0 * uniform_(rng_) - 1.0) * max; }
@@ -41,11 +52,15 @@ class ScanSimulator final : public ScanSource {
   Scene scene_;
   RayCaster caster_;
   ScanLogHeader header_;
-  std::vector<Pose2> poses_;
+  std::vector<Pose2> poses_;  // true poses, one per scan
+  DeadReckoning odometry_;
+  Pose2 true_pose_;
   std::size_t frame_ = 0;
   std::mt19937_64 rng_;
   std::uniform_real_distribution<double> uniform_{0.0, 1.0};
   std::normal_distribution<double> normal_{0.0, 1.0};
+  std::vector<PartialReturn> parts_;  // footprint()'s result, reused
+  std::vector<int> sweep_slots_;      // footprint()'s sample order, reused
 };
 
 }  // namespace scanfilter::sim
