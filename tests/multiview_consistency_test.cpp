@@ -222,34 +222,45 @@ TEST(ConsistencyScore, BandNames) {
   EXPECT_EQ(incidenceBandName(kUnknownIncidenceBand), "unknown");
 }
 
-// The measure against the truth: with labels equal to the simulator's truth
-// (removing exactly the artefacts), a removed return must be far likelier to
-// be one that was never re-observed.
+// The measure against the truth: with labels that remove exactly the
+// simulator's jump points (mixed and displaced returns, which depend on the
+// viewpoint), a removed return must be far likelier to be one that was never
+// re-observed. Ghosts behind mirrors and returns through glass are another
+// matter: the mirror world and the room behind a pane look the same from
+// every viewpoint, so the measure cannot tell them from real surfaces
+// (docs/accuracy.md, limits of the measure); they are printed, not judged.
 TEST(ConsistencyScore, TruthLabelsAreSelectiveOnSimulatedLogs) {
-  // Measured (seed 2, whole trajectories; seeds 1 and 3 within 0.1 %):
-  //   hall:   artefacts 0.87 % of re-observed returns, 76.6 % of never re-observed, selectivity 88
-  //   home:   0.34 %, 13.4 %, selectivity 39
-  //   office: 5.17 %, 18.4 %, selectivity 3.6: its glass partition's ghosts
-  //           and transmissions (truth: misdetected) are 81 % re-observed, a
-  //           mirror image and the room behind the pane look the same from
-  //           every viewpoint (docs/accuracy.md, limits of the measure).
-  //   all three: 1.80 %, 21.0 %, selectivity 11.7.
-  constexpr double kMinSelectivityPerScene = 3.0;
-  constexpr double kMinSelectivityPooled = 6.0;
-  constexpr double kMaxRemovedOfReobservedPooled = 0.03;
+  // Measured (seed 2, whole trajectories, true poses), jump truth only:
+  //   hall 1.73 % of re-observed returns, 57.1 % of never re-observed, selectivity 32.9
+  //   home 0.46 %, 17.5 %, 38.4;  office 0.93 %, 12.7 %, 13.7;  all three 0.88 %, 21.8 %, 24.6.
+  // All truth (ghosts and transmissions too): selectivity 16.7, 17.8, 1.6.
+  constexpr double kMinSelectivityPerScene = 5.0;
+  constexpr double kMinSelectivityPooled = 10.0;
+  constexpr double kMaxRemovedOfReobservedPooled = 0.015;
   ConsistencyCounts pooled;
   for (const auto& name : sim::builtinSceneNames()) {
-    const sim::LabelledLog log = sim::simulateLog(sim::findScene(name), 2, name);
-    std::vector<std::vector<std::uint8_t>> truth;
-    for (const auto& scan : log.scans) truth.push_back(scan.truth);
-    const ConsistencyCounts c = MultiviewConsistency(log.scans, log.sensor).score(truth).all;
-    std::printf("%s seed 2: %zu returns, %.1f %% re-observed, artefacts %.2f %% of re-observed, %.2f %% of never "
-                "re-observed, selectivity %.1f\n",
+    sim::Scene scene = sim::findScene(name);
+    scene.odometry = {};  // true poses, as the corrected CARMEN logs the measure is read on
+    const sim::LabelledLog log = sim::simulateLog(scene, 2, name);
+    std::vector<std::vector<std::uint8_t>> jump_truth, all_truth;
+    for (const auto& scan : log.scans) {
+      all_truth.push_back(scan.truth);
+      jump_truth.push_back(scan.truth);
+      for (auto& code : jump_truth.back())
+        if (code == static_cast<std::uint8_t>(PointCode::kMisdetected)) code = static_cast<std::uint8_t>(PointCode::kValid);
+    }
+    const MultiviewConsistency measure(log.scans, log.sensor);
+    const ConsistencyCounts c = measure.score(jump_truth).all;
+    const ConsistencyCounts all = measure.score(all_truth).all;
+    std::printf("%s seed 2: %zu returns, %.1f %% re-observed; jump truth %.2f %% of re-observed, %.2f %% of never "
+                "re-observed, selectivity %.1f; all truth selectivity %.1f\n",
                 name.c_str(), c.returns, 100.0 * c.reobservedShare(), 100.0 * c.removedOfReobserved(),
-                100.0 * c.removedOfNotReobserved(), c.selectivity());
+                100.0 * c.removedOfNotReobserved(), c.selectivity(), all.selectivity());
     EXPECT_GE(c.selectivity(), kMinSelectivityPerScene) << name;
     pooled.add(c);
   }
+  std::printf("all three: jump truth %.2f %% of re-observed, %.2f %% of never re-observed, selectivity %.1f\n",
+              100.0 * pooled.removedOfReobserved(), 100.0 * pooled.removedOfNotReobserved(), pooled.selectivity());
   EXPECT_GE(pooled.selectivity(), kMinSelectivityPooled);
   EXPECT_LE(pooled.removedOfReobserved(), kMaxRemovedOfReobservedPooled);
 }
