@@ -18,6 +18,7 @@ WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 
 "$BIN/bench/accuracy_table" > "$WORK/table.md"
+"$BIN/bench/accuracy_table" --sensor tof,triangulation > "$WORK/table-sensors.md"
 "$BIN/tools/scanfilter" bench-accuracy --config config/filter.yaml -o "$WORK/compare"
 "$BIN/tools/scanfilter" report-real --config config/filter.yaml --literal-config config/filter-paper-literal.yaml \
   "$REAL"/carmen/*.log.gz "$REAL"/mines_urg04lx/*.dat -o "$WORK/real" --image-prefix images/
@@ -35,6 +36,7 @@ splice() {
   mv "$WORK/accuracy.md" docs/accuracy.md
 }
 splice table "$WORK/table.md"
+splice table-sensors "$WORK/table-sensors.md"
 splice comparison "$WORK/compare/accuracy-comparison.md"
 splice real "$WORK/real/real-recordings.md"
 splice real-consistency "$WORK/real/real-consistency.md"

@@ -73,6 +73,27 @@ prom_api() {  # PromQL: the query API's JSON reply, empty if Prometheus does not
   curl -s --max-time 5 "http://127.0.0.1:19090/api/v1/query" --data-urlencode "query=$1" || true
 }
 
+# 100 simulated hall scans published as a robot driver would (LaserScan +
+# Odometry, ros_scan_publisher FLAGS...) into a live ingest whose `live`
+# section holds MOUNT_KEYS; the recorder gets what comes out.
+run_live() {  # MOUNT_KEYS [FLAGS...]
+  local mount_keys=$1; shift
+  LIVE=100
+  "$SF" simulate --scene hall --seed 4 --max-frames $LIVE -o "$WORK/live_in.scanlog.jsonl" > /dev/null
+  cat > "$WORK/ingest.yaml" <<YAML
+service: {domain_id: $DOMAIN, profiles_file: $SRC/deploy/fastdds-loopback.xml, metrics_address: 127.0.0.1:19471}
+source: {kind: live}
+live: {scan_topic: scan, odom_topic: odom, $mount_keys, max_pose_gap_s: 0.2, reliable: true}
+YAML
+  start_pipeline $LIVE
+  "$BUILD/services/scan_ingest" --config "$WORK/ingest.yaml" > "$WORK/ingest.log" 2>&1 &
+  INGEST=$!; PIDS+=($INGEST)
+  "$BUILD/dds_tools/ros_scan_publisher" --domain "$DOMAIN" --rate 50 --reliable "$@" \
+    "$WORK/live_in.scanlog.jsonl" > "$WORK/publisher.log" 2>&1 || fail "ros_scan_publisher failed"
+  wait "$REC" || fail "recorder did not get $LIVE scans; ingest: $(scrape 19471 | grep -E '^scanfilter_(scans|samples)' | tr '\n' ' ')"
+  kill -TERM "$INGEST"; wait "$INGEST" || fail "scan_ingest exited non-zero"
+}
+
 # The live run's recorded scans (exactly what the ingest published: float32
 # ranges and angles, exact stamps), replayed offline, get the same labels.
 live_equals_offline_replay() {
@@ -199,20 +220,7 @@ prometheus)
 live)
   # A robot driver's LaserScan + Odometry (best effort) into the live ingest:
   # every scan is posed at its stamp and comes out of the pipeline labelled.
-  LIVE=100
-  "$SF" simulate --scene hall --seed 4 --max-frames $LIVE -o "$WORK/live_in.scanlog.jsonl" > /dev/null
-  cat > "$WORK/ingest.yaml" <<YAML
-service: {domain_id: $DOMAIN, profiles_file: $SRC/deploy/fastdds-loopback.xml, metrics_address: 127.0.0.1:19471}
-source: {kind: live}
-live: {scan_topic: scan, odom_topic: odom, mount: [-0.05, 0.0, 3.141592653589793], max_pose_gap_s: 0.2, reliable: true}
-YAML
-  start_pipeline $LIVE
-  "$BUILD/services/scan_ingest" --config "$WORK/ingest.yaml" > "$WORK/ingest.log" 2>&1 &
-  INGEST=$!; PIDS+=($INGEST)
-  "$BUILD/dds_tools/ros_scan_publisher" --domain "$DOMAIN" --rate 50 --reliable "$WORK/live_in.scanlog.jsonl" > "$WORK/publisher.log" 2>&1 ||
-    fail "ros_scan_publisher failed"
-  wait "$REC" || fail "recorder did not get $LIVE scans; ingest: $(scrape 19471 | grep -E '^scanfilter_(scans|samples)' | tr '\n' ' ')"
-  kill -TERM "$INGEST"; wait "$INGEST" || fail "scan_ingest exited non-zero"
+  run_live "mount: [-0.05, 0.0, 3.141592653589793]"
   path_in=$("$SF" info "$WORK/live_in.scanlog.jsonl" | sed -n 's/.*path \([0-9.]*\) m/\1/p')
   path_out=$("$SF" info "$WORK/live.scanlog.jsonl" | sed -n 's/.*path \([0-9.]*\) m/\1/p')
   [ "$path_in" = "$path_out" ] || fail "poses differ: path $path_in m in, $path_out m out"
@@ -226,20 +234,7 @@ upside_down)
   # such a clockwise one; published with its angles as recorded, into an
   # ingest told `upside_down: true`, every scan is posed, labelled exactly as
   # the offline replay labels the same scans, and nothing is lost.
-  LIVE=100
-  "$SF" simulate --scene hall --seed 4 --max-frames $LIVE -o "$WORK/live_in.scanlog.jsonl" > /dev/null
-  cat > "$WORK/ingest.yaml" <<YAML
-service: {domain_id: $DOMAIN, profiles_file: $SRC/deploy/fastdds-loopback.xml, metrics_address: 127.0.0.1:19471}
-source: {kind: live}
-live: {mount: [-0.05, 0.0, 3.141592653589793], upside_down: true, max_pose_gap_s: 0.2, reliable: true}
-YAML
-  start_pipeline $LIVE
-  "$BUILD/services/scan_ingest" --config "$WORK/ingest.yaml" > "$WORK/ingest.log" 2>&1 &
-  INGEST=$!; PIDS+=($INGEST)
-  "$BUILD/dds_tools/ros_scan_publisher" --domain "$DOMAIN" --rate 50 --reliable --upside-down \
-    "$WORK/live_in.scanlog.jsonl" > "$WORK/publisher.log" 2>&1 || fail "ros_scan_publisher failed"
-  wait "$REC" || fail "recorder did not get $LIVE scans"
-  kill -TERM "$INGEST"; wait "$INGEST" || fail "scan_ingest exited non-zero"
+  run_live "mount: [-0.05, 0.0, 3.141592653589793], upside_down: true" --upside-down
   info_out=$("$SF" info "$WORK/live.scanlog.jsonl")
   [[ "$info_out" =~ \],\ cw, ]] || fail "the ingest did not take the upside-down sensor as clockwise: $info_out"
   live_equals_offline_replay
