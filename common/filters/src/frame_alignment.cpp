@@ -11,7 +11,6 @@ namespace scanfilter {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // A step smaller than this (m, rad) has converged.
 constexpr double kConvergedShift = 1e-4;
 constexpr double kConvergedTurn = 1e-5;
@@ -40,9 +39,11 @@ void FrameAligner::snapshotObstacles(const PenetrationGrid& grid, std::span<cons
   const CellIndex top = grid.cellOf(hi.array() + reach);
   width_ = top.x - lo_.x + 1;
   height_ = top.y - lo_.y + 1;
-  cells_.assign(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), Eigen::Vector2d(kNaN, kNaN));
+  cells_.assign(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), kNoObstacle);
+  centroids_.clear();
   grid.forEachObstacleIn(lo_, top, [&](CellIndex c) {
-    cells_[static_cast<std::size_t>((c.y - lo_.y) * width_ + (c.x - lo_.x))] = grid.centroid(c);
+    cells_[static_cast<std::size_t>((c.y - lo_.y) * width_ + (c.x - lo_.x))] = static_cast<std::int32_t>(centroids_.size());
+    centroids_.push_back(grid.centroid(c));
   });
 }
 
@@ -54,8 +55,9 @@ const Eigen::Vector2d* FrameAligner::nearestObstacle(const Eigen::Vector2d& p) c
   double best_sq = params_.max_match_distance * params_.max_match_distance;
   for (int y = std::max(0, cy - reach); y <= std::min(height_ - 1, cy + reach); ++y) {
     for (int x = std::max(0, cx - reach); x <= std::min(width_ - 1, cx + reach); ++x) {
-      const Eigen::Vector2d& q = cells_[static_cast<std::size_t>(y * width_ + x)];
-      if (std::isnan(q.x())) continue;
+      const std::int32_t index = cells_[static_cast<std::size_t>(y * width_ + x)];
+      if (index == kNoObstacle) continue;
+      const Eigen::Vector2d& q = centroids_[static_cast<std::size_t>(index)];
       const double d = (q - p).squaredNorm();
       if (d <= best_sq) {
         best_sq = d;

@@ -80,8 +80,12 @@ class FrameAligner {
   double rms(const Eigen::Isometry2d& correction) const;
 
   FrameAlignmentParams params_;
-  // Obstacle centroids over the frame's reach, one slot per cell (NaN: none).
-  std::vector<Eigen::Vector2d> cells_;
+  // Obstacle cells over the frame's reach: per cell an index into
+  // centroids_ (kNoObstacle: none). Four bytes a cell: the window is
+  // rebuilt every frame and mostly empty.
+  static constexpr std::int32_t kNoObstacle = -1;
+  std::vector<std::int32_t> cells_;
+  std::vector<Eigen::Vector2d> centroids_;
   CellIndex lo_;
   int width_ = 0;
   int height_ = 0;
