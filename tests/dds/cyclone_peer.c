@@ -33,6 +33,7 @@
 #define PUBLISH_PERIOD DDS_MSECS(20)
 #define MATCH_TIMEOUT DDS_SECS(20)
 #define RECEIVE_TIMEOUT DDS_SECS(30)
+#define DISCOVERY_SETTLE DDS_MSECS(300)
 #define MAX_SCANS 400
 /* 1.7e9 s: a double resolves only about 240 ns there. */
 #define FIRST_SEC 1732000000
@@ -198,6 +199,10 @@ int main(int argc, char **argv) {
   if (!wait_matched(w_scan, "rt/scan") || !wait_matched(w_odom, "rt/odom") ||
       !wait_subscribed(r_filtered, "rt/scan_filtered") || !wait_subscribed(r_labeled, "rt/labeled_scan"))
     return 1;
+  /* Matched here is matched on this side: the pipeline's writers may not
+   * have matched these readers yet, and a volatile sample they send before
+   * that is lost. Discovery settles well within this. */
+  dds_sleepfor(DISCOVERY_SETTLE);
 
   static float ranges[BEAMS];
   for (int k = 0; k <= scans; ++k) {
@@ -293,7 +298,12 @@ int main(int argc, char **argv) {
   }
   dds_delete(pp);
   int compared = 0;
-  for (int k = 0; k < scans; ++k) compared += have_filtered[k] && have_labels[k];
+  for (int k = 0; k < scans; ++k) {
+    compared += have_filtered[k] && have_labels[k];
+    if (!have_filtered[k] || !have_labels[k])
+      fprintf(stderr, "cyclone_peer: scan %d missing on%s%s\n", k, have_filtered[k] ? "" : " rt/scan_filtered",
+              have_labels[k] ? "" : " rt/labeled_scan");
+  }
   printf("cyclone_peer: sent %d scans; got %d on rt/scan_filtered, %d on rt/labeled_scan, %d compared beam by beam "
          "(stamps, frame, angles exact; kept beams bit-identical; removed NaN), %d wrong; map %s\n",
          scans, got_filtered, got_labeled, compared, bad, map_ok ? "right" : "WRONG or missing");

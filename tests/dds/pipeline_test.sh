@@ -4,7 +4,8 @@
 # domain id with the loopback-only profile.
 #
 #   pipeline_test.sh BUILD_DIR SOURCE_DIR CASE
-#   CASE: labels | metrics | prometheus | live | upside_down | cyclone | bad_samples | map | config | launcher
+#   CASE: labels | metrics | prometheus | live | upside_down | cyclone | cyclone_upside_down | bad_samples | map |
+#         config | launcher
 set -euo pipefail
 BUILD="$1" SRC="$2" CASE="$3"
 if [ -z "${SCANFILTER_IN_NETNS:-}" ] && [ "$(id -u)" = 0 ] && unshare -n true 2>/dev/null; then
@@ -246,15 +247,19 @@ upside_down)
   [[ "$differ" =~ differ\ in\ ([0-9]+)\ labels ]] && [ "${BASH_REMATCH[1]}" -le 5 ] ||
     fail "upside-down labels far from the original log's: $differ"
   ;;
-cyclone)
+cyclone|cyclone_upside_down)
   # Another vendor's DDS (Cyclone, localhost only) drives the live ingest and
-  # subscribes to the filtered LaserScan, the labelled scan and the map.
+  # subscribes to the filtered LaserScan, the labelled scan and the map; in
+  # cyclone_upside_down the ingest is told the sensor is mounted upside down
+  # (the driver's own angles must come back unchanged either way).
+  upside_down=false
+  [ "$CASE" = cyclone_upside_down ] && upside_down=true
   export CYCLONEDDS_URI='<CycloneDDS><Domain id="any"><General><Interfaces><NetworkInterface address="127.0.0.1" multicast="false"/></Interfaces><AllowMulticast>false</AllowMulticast></General><Discovery><ParticipantIndex>auto</ParticipantIndex><MaxAutoParticipantIndex>20</MaxAutoParticipantIndex><Peers><Peer Address="127.0.0.1"/></Peers></Discovery></Domain></CycloneDDS>'
   start_filters
   cat > "$WORK/ingest.yaml" <<YAML
 service: {domain_id: $DOMAIN, profiles_file: $SRC/deploy/fastdds-loopback.xml, metrics_address: 127.0.0.1:19471}
 source: {kind: live}
-live: {scan_topic: scan, odom_topic: odom, mount: [0.0, 0.0, 0.0], reliable: true}
+live: {scan_topic: scan, odom_topic: odom, mount: [0.0, 0.0, 0.0], upside_down: $upside_down, reliable: true}
 YAML
   printf 'service: {domain_id: %s, profiles_file: %s, metrics_address: 127.0.0.1:19474}\npublishing: {rate_hz: 5}\n' \
     "$DOMAIN" "$SRC/deploy/fastdds-loopback.xml" > "$WORK/map.yaml"

@@ -45,12 +45,19 @@ void FilterStage::onSample(LabeledScanMsg& msg) {
 
   msg.labels().assign(scan_.labels.begin(), scan_.labels.end());
   stampStage(msg, stage_, received);
-  if (!writer_.write(msg)) {
+  const auto outcome = writer_.send(msg);
+  if (outcome == Writer::Outcome::kRefused) {
     metrics_.sampleRejected("write_failed");
     rejections_.warn("write_failed", "could not publish scan " + std::to_string(msg.sequence_number()) +
-                                         " (Fast DDS return code " + std::to_string(writer_.lastError()) +
-                                         "; 10 = timeout: no reader took it within max_blocking_s)");
+                                         " (Fast DDS return code " + std::to_string(writer_.lastError()) + ")");
     return;
+  }
+  if (outcome == Writer::Outcome::kSentUnacknowledged) {
+    // The scan is out; a reader (one that crashed, say) did not acknowledge
+    // in time. Its followers still get the scan and its LaserScan.
+    metrics_.sampleRejected("unacknowledged");
+    rejections_.warn("unacknowledged", "scan " + std::to_string(msg.sequence_number()) +
+                                           " sent, but not every reader acknowledged within max_blocking_s");
   }
   metrics_.scanPublished();
   ++processed_;

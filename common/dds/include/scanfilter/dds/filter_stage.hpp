@@ -45,7 +45,8 @@ class FilterStage {
   SensorInfo sensor_;
   std::vector<std::uint8_t> labels_before_;
   std::atomic<std::uint64_t> processed_{0};
-  TypedWriter<scanfilter_msgs::msg::dds_::LabeledScan_PubSubType> writer_;
+  using Writer = TypedWriter<scanfilter_msgs::msg::dds_::LabeledScan_PubSubType>;
+  Writer writer_;
   TypedReader<scanfilter_msgs::msg::dds_::LabeledScan_PubSubType> reader_;  // last: callbacks see a ready writer
 };
 

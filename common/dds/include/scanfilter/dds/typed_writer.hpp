@@ -43,21 +43,31 @@ class TypedWriter : private eprosima::fastdds::dds::DataWriterListener {
     max_wait_s_ = max_wait_s;
   }
 
-  // False when Fast DDS refused the sample, or (with flow control) when the
-  // readers did not acknowledge the window in time: the stream is stalled.
-  bool write(Sample& sample) {
+  enum class Outcome {
+    kSent,
+    // Sent, but (with flow control) some reader did not acknowledge the
+    // window within max_wait_s: a stalled or departed reader.
+    kSentUnacknowledged,
+    kRefused,  // Fast DDS did not take the sample
+  };
+
+  Outcome send(Sample& sample) {
     const auto rc = writer_->write(&sample, eprosima::fastrtps::rtps::InstanceHandle_t());
     last_error_ = rc();
-    if (rc != eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK) return false;
+    if (rc != eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK) return Outcome::kRefused;
     if (window_ > 0 && ++unacknowledged_ >= window_) {
       unacknowledged_ = 0;
       if (!waitForAcknowledgments(max_wait_s_)) {
         last_error_ = eprosima::fastrtps::types::ReturnCode_t::RETCODE_TIMEOUT;
-        return false;
+        return Outcome::kSentUnacknowledged;
       }
     }
-    return true;
+    return Outcome::kSent;
   }
+
+  // False when Fast DDS refused the sample, or (with flow control) when the
+  // readers did not acknowledge the window in time: the stream is stalled.
+  bool write(Sample& sample) { return send(sample) == Outcome::kSent; }
 
   // Waits until every matched reader acknowledged every sample written.
   bool waitForAcknowledgments(double seconds) {
