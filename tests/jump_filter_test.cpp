@@ -1,6 +1,8 @@
 #include <algorithm>
 #include <numbers>
 
+#include <random>
+
 #include <gtest/gtest.h>
 
 #include "scan_builder.hpp"
@@ -170,9 +172,47 @@ TEST(JumpClusterRule, Equation5ScalesWithRange) {
   p.angular_accuracy_deg = 1.0;
   p.alpha = 2.0;
   p.theta_k_deg = 60.0;
+  p.radius_noise_sigmas = 0.0;  // the paper's radius alone
   const JumpClusterRule rule(p);
   const double expected = 2.0 * 3.0 * std::sin(kDeg) * 2.0 / std::cos(60.0 * kDeg);
   EXPECT_NEAR(rule.neighbourRadius(3.0), expected, 1e-12);
+}
+
+TEST(JumpClusterRule, RangeNoiseWidensTheRadius) {
+  JumpFilterParams p;
+  p.radius_noise_sigmas = 3.0;
+  p.noise_sigma_base = 0.003;
+  p.noise_sigma_quadratic = 0.001;
+  JumpFilterParams paper = p;
+  paper.radius_noise_sigmas = 0.0;
+  const JumpClusterRule widened(p), literal(paper);
+  EXPECT_NEAR(widened.neighbourRadius(3.0) - literal.neighbourRadius(3.0), 3.0 * (0.003 + 0.001 * 9.0), 1e-12);
+  // The window bound covers the radius at every range in the interval.
+  const double bound = widened.maxRadiusPerMetre(0.15, 6.0);
+  for (double d = 0.15; d <= 6.0; d += 0.01) EXPECT_LE(widened.neighbourRadius(d), bound * d + 1e-12) << d;
+}
+
+// At 0.1° steps range noise (σ 1.2 cm at 3 m) exceeds eq. 5's radius (1.8 cm at
+// 3 m): a plain wall falls apart into clusters eq. 7 deletes unless the radius
+// allows for the noise.
+TEST(JumpFilter, ANoisyWallAtFineStepsStaysWhole) {
+  const SensorInfo sensor = test::simpleSensor();
+  Scan scan = castScan(World{}.wall({3, -4}, {3, 4}), {0, 0, 0}, sensor, 3600);
+  std::mt19937 rng(3);
+  for (auto& r : scan.ranges)
+    if (r == r) r += std::normal_distribution<double>(0.0, 0.003 + 0.001 * r * r)(rng);
+  auto jumpPoints = [&](double sigmas) {
+    JumpFilterParams p;
+    p.angular_accuracy_deg = 0.1;
+    p.radius_noise_sigmas = sigmas;
+    std::vector<std::uint8_t> labels(scan.size());
+    makeJumpFilter(p, Implementation::kFast)->apply(scan, sensor, labels);
+    return countCode(labels, PointCode::kJump);
+  };
+  const std::size_t returns = static_cast<std::size_t>(std::count_if(scan.ranges.begin(), scan.ranges.end(),
+                                                                     [](double r) { return r == r; }));
+  EXPECT_GT(jumpPoints(0.0), returns / 10) << "without the widening the wall falls apart, or this shows nothing";
+  EXPECT_LT(jumpPoints(3.0), returns / 100);
 }
 
 TEST(JumpClusterRule, Equation7InterpolatesTheMinimumLength) {

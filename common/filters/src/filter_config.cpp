@@ -23,6 +23,8 @@ void readJump(YamlSection& s, FilterConfig& config) {
   s.readChoice("span_range", span, {"cluster_mean", "seed"});
   p.span_range = span == "seed" ? SpanRange::kSeed : SpanRange::kClusterMean;
   s.read("off_surface_check", p.off_surface_check);
+  s.read("radius_noise_sigmas", p.radius_noise_sigmas);
+  s.requireRange("radius_noise_sigmas", p.radius_noise_sigmas, 0.0, 100.0, "0-100");
   s.read("straight_runs", p.straight_runs);
   s.read("straight_run_max_incidence_deg", p.straight_run_max_incidence_deg);
   s.read("straight_run_min_points", p.straight_run_min_points);

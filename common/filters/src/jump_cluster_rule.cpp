@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace scanfilter {
@@ -14,6 +15,13 @@ JumpClusterRule::JumpClusterRule(const JumpFilterParams& params)
     : params_(params),
       radius_per_metre_(2.0 * std::sin(degToRad(params.angular_accuracy_deg)) * params.alpha /
                         std::cos(degToRad(params.theta_k_deg))) {}
+
+double JumpClusterRule::maxRadiusPerMetre(double range_lo, double range_hi) const {
+  // σ(d)/d = base/d + quadratic·d is convex in d: its largest value over an
+  // interval is at one of the ends.
+  const auto per_metre = [&](double d) { return radius_per_metre_ + noiseWidening(d) / d; };
+  return range_lo > 0.0 ? std::max(per_metre(range_lo), per_metre(range_hi)) : std::numeric_limits<double>::infinity();
+}
 
 double JumpClusterRule::spanThreshold(double d_ave, double d_seed) const {
   const double d = params_.span_range == SpanRange::kClusterMean ? d_ave : d_seed;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "scanfilter/point_code.hpp"
 #include "scanfilter/scan_geometry.hpp"
@@ -82,7 +83,13 @@ void FastJumpFilter::prepare(const Scan& scan) {
 
   // A disc of radius k·d around a point at range d subtends asin(k) from the
   // sensor; one beam of margin absorbs rounding. k >= 1 means no bound.
-  const double k = rule_.radiusPerMetre();
+  double nearest = std::numeric_limits<double>::infinity(), farthest = 0.0;
+  for (std::size_t i = 0; i < scan.size(); ++i) {
+    if (!scan.hasReturn(i)) continue;
+    nearest = std::min(nearest, scan.ranges[i]);
+    farthest = std::max(farthest, scan.ranges[i]);
+  }
+  const double k = farthest > 0.0 ? rule_.maxRadiusPerMetre(nearest, farthest) : 0.0;
   const double increment = std::abs(scan.angle_increment);
   if (k >= 1.0 || increment <= 0.0) {
     half_window_ = n;

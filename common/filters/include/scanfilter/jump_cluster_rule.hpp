@@ -13,10 +13,15 @@ class JumpClusterRule {
  public:
   explicit JumpClusterRule(const JumpFilterParams& params);
 
-  // d_th of equation (5) for a point at `range`: it is proportional to the
-  // range, so the ratio is computed once.
-  double neighbourRadius(double range) const { return radius_per_metre_ * range; }
-  double radiusPerMetre() const { return radius_per_metre_; }
+  // d_th of equation (5) for a point at `range` (proportional to the range,
+  // so the ratio is computed once), widened by `radius_noise_sigmas` · σ(range)
+  // beyond the paper: two returns of one surface also differ by range noise,
+  // which at fine angular steps exceeds eq. 5's radius and breaks a wall
+  // into clusters eq. 7 deletes.
+  double neighbourRadius(double range) const { return radius_per_metre_ * range + noiseWidening(range); }
+  // The largest radius per metre of range over [range_lo, range_hi]: what
+  // bounds the angular window a neighbour can lie in.
+  double maxRadiusPerMetre(double range_lo, double range_hi) const;
 
   // Equations (6) and (7) on one cluster. `members` are beam indices in
   // increasing order; `beam_count` and `full_turn` describe the scan so the
@@ -32,6 +37,10 @@ class JumpClusterRule {
                                    bool full_turn);
 
  private:
+  double noiseWidening(double range) const {
+    return params_.radius_noise_sigmas * (params_.noise_sigma_base + params_.noise_sigma_quadratic * range * range);
+  }
+
   JumpFilterParams params_;
   double radius_per_metre_;
 };

@@ -35,6 +35,10 @@ struct JumpFilterParams {
   // `straight_run_max_incidence_deg` would put them, join one cluster when
   // the run has at least `straight_run_min_points` returns (a short run of
   // mixed returns between an edge and its background is no surface).
+  // Beyond the paper: eq. 5's radius widened by this many σ(range) (the noise
+  // model above), so that range noise alone does not split a surface (at
+  // 0.1° steps σ exceeds eq. 5's radius from about 1 m). 0 = the paper.
+  double radius_noise_sigmas = 3.0;
   bool straight_runs = true;
   double straight_run_max_incidence_deg = 85.0;
   int straight_run_min_points = 5;
