@@ -8,6 +8,7 @@
 #include <spdlog/spdlog.h>
 
 #include "scanfilter/dds/filter_stage.hpp"
+#include "scanfilter/dds/per_sensor_filter.hpp"
 #include "scanfilter/dds/service_runtime.hpp"
 #include "scanfilter/dds/stream_qos.hpp"
 #include "scanfilter/dds/topic_names.hpp"
@@ -46,8 +47,10 @@ int main(int argc, char** argv) {
   return runService(argc, argv, description, [](ServiceRuntime& runtime) {
     const FilterConfig filter_config = loadStageFilterConfig(runtime.config());
     const LaserScanSettings laser_settings = readLaserScanSettings(runtime.config());
-    // Step 2's parameters have no `auto` values: one filter, whatever the sensor.
-    auto filter = makePenetrationFilter(filter_config.params.penetration, Implementation::kFast);
+    // obs_th follows the sensor's angular step: one filter per sensor.
+    PerSensorFilter<PenetrationFilter> filters(filter_config, [](const TwoStepFilterParams& p) {
+      return makePenetrationFilter(p.penetration, Implementation::kFast);
+    });
     const bool enabled = filter_config.params.penetration_enabled;
     const std::string laser_topic = runtime.topic(kFilteredLaserScanTopic);
     TypedWriter<sensor_msgs::msg::dds_::LaserScan_PubSubType> laser_writer(runtime.participant(), laser_topic,
@@ -57,14 +60,16 @@ int main(int argc, char** argv) {
     FilterStage stage(
         runtime, "penetration_filter", kJumpFilteredTopic, kLabeledScanTopic,
         [&](const Scan& scan, const SensorInfo& sensor, std::span<std::uint8_t> labels) {
-          if (enabled) filter->apply(scan, sensor, labels);
+          if (enabled) filters.forSensor(sensor).apply(scan, sensor, labels);
         },
         [&](const LabeledScanMsg& msg) {
           toFilteredLaserScan(msg, laser_settings.frame_id, laser_settings.removed, laser);
           laser_writer.write(laser);
         });
     runtime.runUntilStopped();
-    spdlog::info("stopping after {} scans ({} penetration cache resets)", stage.processed(), filter->resetCount());
+    const PenetrationFilter* filter = filters.current();
+    spdlog::info("stopping after {} scans ({} penetration cache resets, {} frames not judged: did not fit the cache)",
+                 stage.processed(), filter ? filter->resetCount() : 0, filter ? filter->unalignedFrames() : 0);
     return 0;
   });
 }

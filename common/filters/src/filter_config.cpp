@@ -76,6 +76,9 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.read("frame_lifetime", p.frame_lifetime);
   s.read("min_frames", p.min_frames);
   s.read("obstacle_threshold", p.obstacle_threshold);
+  s.read("obstacle_threshold_reference_deg", config.obstacle_threshold_reference_deg);
+  s.requireRange("obstacle_threshold_reference_deg", config.obstacle_threshold_reference_deg, 0.0, 90.0,
+                 "0 (as given) or the angular step obs_th is for, in degrees");
   s.read("corridor_half_width", p.corridor_half_width);
   s.read("obstacle_at_centroid", p.obstacle_at_centroid);
   s.read("require_both_sides", p.require_both_sides);
@@ -142,6 +145,11 @@ TwoStepFilterParams FilterConfig::resolve(const SensorInfo& sensor) const {
   out.jump.angular_accuracy_deg = angular_accuracy_deg.value_or(sensor.angular_accuracy_deg);
   out.jump.d_min = d_min.value_or(sensor.range_min);
   out.jump.d_max = d_max.value_or(sensor.range_max);
+  if (obstacle_threshold_reference_deg > 0.0) {
+    const double points_per_reference_step = obstacle_threshold_reference_deg / out.jump.angular_accuracy_deg;
+    out.penetration.obstacle_threshold = static_cast<int>(
+        std::lround(static_cast<double>(params.penetration.obstacle_threshold) * points_per_reference_step));
+  }
   return out;
 }
 

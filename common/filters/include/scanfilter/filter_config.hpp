@@ -16,6 +16,10 @@ struct FilterConfig {
   std::optional<double> angular_accuracy_deg;  // unset: the log header's
   std::optional<double> d_min;                 // unset: the sensor's range_min
   std::optional<double> d_max;                 // unset: the sensor's range_max
+  // obs_th counts points, and a surface puts more of them in a cell the finer
+  // the angular step: obs_th is given for this step (degrees) and scaled to
+  // the sensor's (rounded). 0: obs_th as given, whatever the sensor.
+  double obstacle_threshold_reference_deg = 1.0;
 
   // Parameters for one sensor, with every `auto` value filled in.
   TwoStepFilterParams resolve(const SensorInfo& sensor) const;
