@@ -126,6 +126,20 @@ double FrameAligner::rms(const Eigen::Isometry2d& correction) const {
   return std::sqrt(sum / static_cast<double>(matches_.size()));
 }
 
+Eigen::Isometry2d FrameAligner::fit(const Eigen::Vector2d& origin) {
+  Eigen::Isometry2d correction = Eigen::Isometry2d::Identity();
+  for (int iteration = 0; iteration < params_.max_iterations; ++iteration) {
+    if (matchPoints(correction) < params_.min_matches) break;
+    const Eigen::Isometry2d next = step(correction, origin);
+    const Eigen::Isometry2d delta = next * correction.inverse();
+    correction = next;
+    if (delta.translation().norm() < kConvergedShift &&
+        std::abs(Eigen::Rotation2Dd(delta.linear()).angle()) < kConvergedTurn)
+      break;
+  }
+  return correction;
+}
+
 FrameAlignment FrameAligner::align(const PenetrationGrid& grid, std::span<const Eigen::Vector2d> points,
                                    const std::vector<bool>& usable, const Eigen::Vector2d& origin) {
   FrameAlignment out;
@@ -136,16 +150,7 @@ FrameAlignment FrameAligner::align(const PenetrationGrid& grid, std::span<const 
   const Eigen::Isometry2d identity = Eigen::Isometry2d::Identity();
   const int matched_as_is = matchPoints(identity);
   const double rms_as_is = rms(identity);
-  Eigen::Isometry2d correction = identity;
-  for (int iteration = 0; iteration < params_.max_iterations; ++iteration) {
-    if (matchPoints(correction) < params_.min_matches) break;
-    const Eigen::Isometry2d next = step(correction, origin);
-    const Eigen::Isometry2d delta = next * correction.inverse();
-    correction = next;
-    if (delta.translation().norm() < kConvergedShift &&
-        std::abs(Eigen::Rotation2Dd(delta.linear()).angle()) < kConvergedTurn)
-      break;
-  }
+  Eigen::Isometry2d correction = fit(origin);
   out.matches = matchPoints(correction);
   out.rms = rms(correction);
   const bool gained = out.matches >= matched_as_is && out.rms <= rms_as_is - params_.min_rms_gain;

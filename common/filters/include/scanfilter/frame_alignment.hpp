@@ -75,6 +75,8 @@ class FrameAligner {
   const Eigen::Vector2d* nearestObstacle(const Eigen::Vector2d& p) const;
   void findNormals(std::span<const Eigen::Vector2d> points, const std::vector<bool>& usable);
   int matchPoints(const Eigen::Isometry2d& correction);
+  // Gauss-Newton from no correction until it converges or max_iterations.
+  Eigen::Isometry2d fit(const Eigen::Vector2d& origin);
   // One Gauss-Newton step of the point-to-line distances.
   Eigen::Isometry2d step(const Eigen::Isometry2d& correction, const Eigen::Vector2d& origin) const;
   double rms(const Eigen::Isometry2d& correction) const;
