@@ -77,6 +77,21 @@ TEST(ScanLog, RoundTripKeepsEveryKeyAndAddsLabels) {
   EXPECT_DOUBLE_EQ(records[0].scan.ranges[4], 5.98);
 }
 
+// A scan serialised from memory (no original line) into a log with a
+// 0.1-10 m sensor, and the records read back.
+std::vector<ScanRecord> writtenAndReadBack(const Scan& scan) {
+  ScanLogHeader header;
+  header.sensor.range_min = 0.1;
+  header.sensor.range_max = 10;
+  TempFile out("serialised.scanlog.jsonl");
+  {
+    ScanLogWriter writer(out.path(), header);
+    writer.write(ScanRecord{scan, {}, 0});
+    writer.close();
+  }
+  return readAll(out.path());
+}
+
 TEST(ScanLog, SerialisedScanRoundTrips) {
   Scan s;
   s.stamp = Stamp::fromSeconds(1.5);
@@ -85,16 +100,7 @@ TEST(ScanLog, SerialisedScanRoundTrips) {
   s.ranges = {1.0, std::nan(""), 2.5};
   s.truth = {0, 3, 1};
   s.thin_leg_beams = {0};
-  ScanLogHeader h;
-  h.sensor.range_min = 0.1;
-  h.sensor.range_max = 10;
-  TempFile out("ser.scanlog.jsonl");
-  {
-    ScanLogWriter writer(out.path(), h);
-    writer.write(ScanRecord{s, {}, 0});
-    writer.close();
-  }
-  const auto records = readAll(out.path());
+  const auto records = writtenAndReadBack(s);
   ASSERT_EQ(records.size(), 1u);
   EXPECT_EQ(records[0].scan.truth, s.truth);
   EXPECT_EQ(records[0].scan.thin_leg_beams, s.thin_leg_beams);
@@ -222,16 +228,7 @@ TEST(ScanLog, RecordedRangesAreWrittenAsGiven) {
   const double inf = std::numeric_limits<double>::infinity();
   s.ranges = {1.0, std::nan(""), std::nan(""), std::nan("")};
   s.recorded_ranges = {1.0, inf, 12.5, std::nan("")};
-  ScanLogHeader h;
-  h.sensor.range_min = 0.1;
-  h.sensor.range_max = 10;
-  TempFile out("rec.scanlog.jsonl");
-  {
-    ScanLogWriter writer(out.path(), h);
-    writer.write(ScanRecord{s, {}, 0});
-    writer.close();
-  }
-  const auto records = readAll(out.path());
+  const auto records = writtenAndReadBack(s);
   ASSERT_EQ(records.size(), 1u);
   const Scan& back = records[0].scan;
   EXPECT_EQ(back.stamp.nanoseconds(), 7);
