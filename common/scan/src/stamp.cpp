@@ -14,6 +14,13 @@ constexpr long kMaxExponent = 40;
 
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
 
+// value * 10 + digit, or false when that leaves int64 nanoseconds.
+bool appendDigit(std::int64_t& value, int digit) {
+  if (value > (kMaxNanoseconds - digit) / 10) return false;
+  value = value * 10 + digit;
+  return true;
+}
+
 // value = digits * 10^exponent, split out of the text.
 struct Decimal {
   bool negative = false;
@@ -67,20 +74,18 @@ std::optional<Stamp> Stamp::parseDecimal(std::string_view text) {
   const long length = static_cast<long>(d->digits.size());
   if (shift > kMaxExponent) return std::nullopt;
   const long kept = shift >= 0 ? length : length + shift;  // digits at or above 1 ns
-  __int128 ns = 0;
-  for (long k = 0; k < kept; ++k) {
-    ns = ns * 10 + (d->digits[static_cast<std::size_t>(k)] - '0');
-    if (ns > kMaxNanoseconds) return std::nullopt;
-  }
-  for (long k = 0; k < shift; ++k) {
-    ns *= 10;
-    if (ns > kMaxNanoseconds) return std::nullopt;
-  }
+  std::int64_t ns = 0;
+  for (long k = 0; k < kept; ++k)
+    if (!appendDigit(ns, d->digits[static_cast<std::size_t>(k)] - '0')) return std::nullopt;
+  for (long k = 0; k < shift; ++k)
+    if (!appendDigit(ns, 0)) return std::nullopt;
   // Round half away from zero on the first digit below a nanosecond.
   const bool round_up = kept >= 0 && kept < length && d->digits[static_cast<std::size_t>(kept)] >= '5';
-  if (round_up && ++ns > kMaxNanoseconds) return std::nullopt;
-  const auto value = static_cast<std::int64_t>(ns);
-  return Stamp(d->negative ? -value : value);
+  if (round_up) {
+    if (ns == kMaxNanoseconds) return std::nullopt;
+    ++ns;
+  }
+  return Stamp(d->negative ? -ns : ns);
 }
 
 std::string Stamp::toDecimal() const {
@@ -88,7 +93,9 @@ std::string Stamp::toDecimal() const {
   // Unsigned so that the most negative stamp has a magnitude too.
   const std::uint64_t magnitude = negative ? 0 - static_cast<std::uint64_t>(ns_) : static_cast<std::uint64_t>(ns_);
   const auto per_second = static_cast<std::uint64_t>(kNanosPerSecond);
-  std::string out = (negative ? "-" : "") + std::to_string(magnitude / per_second);
+  // Appended, not operator+: GCC 12 warns falsely on it (-Wrestrict, bug 105651).
+  std::string out = negative ? "-" : "";
+  out += std::to_string(magnitude / per_second);
   const std::uint64_t fraction = magnitude % per_second;
   if (fraction == 0) return out;
   std::string digits = std::to_string(fraction);
