@@ -18,8 +18,8 @@ PACKAGES=(
 
 missing=()
 for p in "${PACKAGES[@]}"; do
-  # Captured first: under pipefail, `dpkg-query | grep -q` can fail when grep
-  # exits before dpkg-query has written everything (SIGPIPE).
+  # Captured first: under pipefail, piping dpkg-query into a grep that quits
+  # at its first match can fail (dpkg-query gets SIGPIPE).
   status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null) || true
   grep -q "install ok installed" <<<"$status" || missing+=("$p")
 done

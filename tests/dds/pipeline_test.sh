@@ -29,8 +29,8 @@ fail() {
 SF="$BUILD/tools/scanfilter"
 FRAMES=300
 
-# Output is captured before it is searched: under pipefail, `curl | grep -q`
-# fails at random (grep exits at the first match, curl gets SIGPIPE).
+# Output is captured before it is searched: under pipefail, piping curl into
+# a grep that quits at its first match fails at random (curl gets SIGPIPE).
 scrape() {  # port: the service's metrics page, empty if it does not answer
   curl -s --max-time 2 "http://127.0.0.1:$1/metrics" || true
 }
