@@ -114,8 +114,10 @@ TEST(LabeledScanMessage, CarriesTheStampExactly) {
   Scan scan;
   scan.stamp = *Stamp::parseDecimal("1732000000.200700045");
   scan.ranges = {1.0};
+  SensorInfo sensor_out;
+  sensor_out.range_max = 5;
   LabeledScanMsg msg;
-  toMessage(scan, SensorInfo{.range_max = 5}, 0, msg);
+  toMessage(scan, sensor_out, 0, msg);
   EXPECT_EQ(msg.header().stamp().sec(), 1'732'000'000);
   EXPECT_EQ(msg.header().stamp().nanosec(), 200'700'045u);
   Scan back;
@@ -127,8 +129,11 @@ TEST(LabeledScanMessage, CarriesTheStampExactly) {
 TEST(LabeledScanMessage, RejectsATimeWithTooManyNanoseconds) {
   Scan scan;
   scan.ranges = {1.0};
+  SensorInfo sensor;
+  sensor.range_min = 0.1;
+  sensor.range_max = 5;
   LabeledScanMsg msg;
-  toMessage(scan, SensorInfo{.range_min = 0.1, .range_max = 5, .angular_accuracy_deg = 1}, 0, msg);
+  toMessage(scan, sensor, 0, msg);
   msg.angle_increment(0.01);
   EXPECT_FALSE(rejectionReason(msg));
   msg.header().stamp().nanosec(1'000'000'000);

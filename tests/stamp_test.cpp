@@ -22,7 +22,6 @@ TEST(Stamp, KeepsWhatADoubleLoses) {
   const auto b = Stamp::parseDecimal("1732000000.200700001");
   ASSERT_TRUE(a && b);
   EXPECT_EQ(b->nanoseconds() - a->nanoseconds(), 1);
-  EXPECT_EQ(1732000000.200700000, 1732000000.200700001);  // the double cannot
 }
 
 TEST(Stamp, RoundsDigitsBelowANanosecond) {

@@ -23,17 +23,14 @@ void readJump(YamlSection& s, FilterConfig& config) {
   s.readChoice("span_range", span, {"cluster_mean", "seed"});
   p.span_range = span == "seed" ? SpanRange::kSeed : SpanRange::kClusterMean;
   s.read("off_surface_check", p.off_surface_check);
-  s.read("radius_noise_sigmas", p.radius_noise_sigmas);
-  s.requireRange("radius_noise_sigmas", p.radius_noise_sigmas, 0.0, 100.0, "0-100");
-  s.read("straight_runs", p.straight_runs);
-  s.read("straight_run_max_incidence_deg", p.straight_run_max_incidence_deg);
-  s.read("straight_run_min_points", p.straight_run_min_points);
-  s.requireRange("straight_run_max_incidence_deg", p.straight_run_max_incidence_deg, 0.0, 89.9, "0-89.9 (degrees)");
-  s.requireRange("straight_run_min_points", p.straight_run_min_points, 3, 1e6, "an integer >= 3");
   s.read("off_surface_min", p.off_surface_min);
   s.read("off_surface_sigmas", p.off_surface_sigmas);
   s.read("noise_sigma_base", p.noise_sigma_base);
   s.read("noise_sigma_quadratic", p.noise_sigma_quadratic);
+  s.read("radius_noise_sigmas", p.radius_noise_sigmas);
+  s.read("straight_runs", p.straight_runs);
+  s.read("straight_run_max_incidence_deg", p.straight_run_max_incidence_deg);
+  s.read("straight_run_min_points", p.straight_run_min_points);
   if (config.angular_accuracy_deg) s.requireRange("angular_accuracy_deg", *config.angular_accuracy_deg, 1e-6, 90.0, "0 < value <= 90");
   s.requireRange("alpha", p.alpha, 1e-9, 1e9, "a value > 0");
   s.requireRange("theta_k_deg", p.theta_k_deg, 0.0, 89.9, "0 <= value < 90 (cos θK must stay positive)");
@@ -43,6 +40,9 @@ void readJump(YamlSection& s, FilterConfig& config) {
   s.requireRange("off_surface_sigmas", p.off_surface_sigmas, 0.0, 1e9, "a value >= 0");
   s.requireRange("noise_sigma_base", p.noise_sigma_base, 0.0, 1e9, "a value >= 0 (m)");
   s.requireRange("noise_sigma_quadratic", p.noise_sigma_quadratic, 0.0, 1e9, "a value >= 0 (m per m²)");
+  s.requireRange("radius_noise_sigmas", p.radius_noise_sigmas, 0.0, 100.0, "0-100");
+  s.requireRange("straight_run_max_incidence_deg", p.straight_run_max_incidence_deg, 0.0, 89.9, "0-89.9 (degrees)");
+  s.requireRange("straight_run_min_points", p.straight_run_min_points, 3, 1e6, "an integer >= 3");
   if (config.d_min && config.d_max && !(*config.d_max > *config.d_min)) s.fail("d_max", "expected d_max > d_min");
   s.rejectUnknownKeys();
 }

@@ -22,21 +22,15 @@ Eigen::Vector2d perpendicular(const Eigen::Vector2d& v) { return {-v.y(), v.x()}
 }  // namespace
 
 void FrameAligner::snapshotObstacles(const PenetrationGrid& grid, std::span<const Eigen::Vector2d> points) {
-  Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector2d hi = -lo;
-  for (const auto& p : points) {
-    if (std::isnan(p.x())) continue;
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
+  const Eigen::AlignedBox2d box = returnBounds(points);
   cell_size_ = grid.cellSize();
-  if (!(lo.x() <= hi.x())) {
+  if (box.isEmpty()) {
     width_ = height_ = 0;
     return;
   }
   const double reach = params_.max_match_distance + cell_size_;
-  lo_ = grid.cellOf(lo.array() - reach);
-  const CellIndex top = grid.cellOf(hi.array() + reach);
+  lo_ = grid.cellOf(box.min().array() - reach);
+  const CellIndex top = grid.cellOf(box.max().array() + reach);
   width_ = top.x - lo_.x + 1;
   height_ = top.y - lo_.y + 1;
   cells_.assign(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), kNoObstacle);

@@ -42,9 +42,9 @@ void JumpFilter::judgeClusters(const Scan& scan, std::uint32_t cluster_count, st
     if (cluster_of_[i] != StraightRunJoin::kNoCluster) ++group_start_[joined[cluster_of_[i]] + 1];
   for (std::uint32_t c = 0; c < cluster_count; ++c) group_start_[c + 1] += group_start_[c];
   grouped_.resize(group_start_[cluster_count]);
-  cluster_ = group_start_;  // fill positions
+  group_fill_ = group_start_;
   for (std::uint32_t i = 0; i < n; ++i)
-    if (cluster_of_[i] != StraightRunJoin::kNoCluster) grouped_[cluster_[joined[cluster_of_[i]]]++] = i;
+    if (cluster_of_[i] != StraightRunJoin::kNoCluster) grouped_[group_fill_[joined[cluster_of_[i]]]++] = i;
   for (std::uint32_t c = 0; c < cluster_count; ++c) {
     const std::span<const std::uint32_t> members(grouped_.data() + group_start_[c], group_start_[c + 1] - group_start_[c]);
     if (members.empty() || rule_.keepsCluster(members, scan.ranges, n, full_turn_, scan.angle_increment)) continue;

@@ -192,15 +192,10 @@ bool ReferencePenetrationFilter::isMisdetected(const Eigen::Vector2d& r, const E
 void FastPenetrationFilter::prepareJudging(const Eigen::Vector2d& origin) {
   // The reach of this frame: its points and the sensor, widened by how far
   // off a beam and beyond its point a penetrating cell can lie.
-  Eigen::Vector2d lo = origin, hi = origin;
-  for (const auto& p : points_) {
-    if (std::isnan(p.x())) continue;
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
+  Eigen::AlignedBox2d box = returnBounds(points_);
+  box.extend(origin);
   const double reach = rule_.outerHalfWidth() + positionSlack() + rule_.behindMargin() + grid_.cellSize();
-  window_.build(grid_, grid_.cellOf(lo.array() - reach),
-                grid_.cellOf(hi.array() + reach));
+  window_.build(grid_, grid_.cellOf(box.min().array() - reach), grid_.cellOf(box.max().array() + reach));
 }
 
 bool FastPenetrationFilter::isMisdetected(const Eigen::Vector2d& r, const Eigen::Vector2d& p, double own_sq) {

@@ -11,22 +11,10 @@ namespace scanfilter {
 
 StraightRunJoin::StraightRunJoin(const JumpFilterParams& params) : params_(params) {}
 
-const Eigen::Vector2d* StraightRunJoin::at(std::int64_t k) const {
-  const auto n = static_cast<std::int64_t>(points_.size());
-  if (full_turn_) k += k < 0 ? n : (k >= n ? -n : 0);
-  if (k < 0 || k >= n || ranges_[static_cast<std::size_t>(k)] != ranges_[static_cast<std::size_t>(k)]) return nullptr;
-  return &points_[static_cast<std::size_t>(k)];
-}
-
-double StraightRunJoin::tolerance(double range) const {
-  const double sigma = params_.noise_sigma_base + params_.noise_sigma_quadratic * range * range;
-  return std::max(params_.off_surface_min, params_.off_surface_sigmas * sigma);
-}
-
 bool StraightRunJoin::insideRun(std::int64_t i) const {
-  const Eigen::Vector2d* p = at(i - 1);
-  const Eigen::Vector2d* q = at(i);
-  const Eigen::Vector2d* r = at(i + 1);
+  const Eigen::Vector2d* p = returns_.at(i - 1);
+  const Eigen::Vector2d* q = returns_.at(i);
+  const Eigen::Vector2d* r = returns_.at(i + 1);
   if (!p || !q || !r) return false;
   const double max_gap = gap_per_metre_ * q->norm();
   if ((*q - *p).norm() > max_gap || (*r - *q).norm() > max_gap) return false;
@@ -35,7 +23,7 @@ bool StraightRunJoin::insideRun(std::int64_t i) const {
   const Eigen::Vector2d along = *r - *p;
   const double cross = along.x() * q->y() - along.y() * q->x();
   if (std::abs(cross) < min_sin_to_beam_ * along.norm() * q->norm()) return false;
-  return (*q - *p).dot(*r - *q) > 0.0 && !OffSurfaceCheck::isOffLine(*q, *p, *r, tolerance(q->norm()));
+  return (*q - *p).dot(*r - *q) > 0.0 && !OffSurfaceCheck::isOffLine(*q, *p, *r, offSurfaceTolerance(params_, q->norm()));
 }
 
 std::uint32_t StraightRunJoin::find(std::uint32_t c) {
@@ -55,8 +43,9 @@ void StraightRunJoin::joinRun(std::int64_t first, std::int64_t last, std::span<c
   // mixed return beside a wall run lies off that line, if near the beam
   // pair the inside test saw).
   const auto continues = [&](std::int64_t end, std::int64_t a, std::int64_t b) {
-    const Eigen::Vector2d* p = at(end);
-    return first < last && p && !OffSurfaceCheck::isOffLine(*p, *at(a), *at(b), tolerance(p->norm()));
+    const Eigen::Vector2d* p = returns_.at(end);
+    return first < last && p &&
+           !OffSurfaceCheck::isOffLine(*p, *returns_.at(a), *returns_.at(b), offSurfaceTolerance(params_, p->norm()));
   };
   if (continues(first - 1, first, first + 1)) --first;
   if (continues(last + 1, last - 1, last)) ++last;
@@ -74,9 +63,7 @@ const std::vector<std::uint32_t>& StraightRunJoin::join(std::span<const Eigen::V
   parent_.resize(cluster_count);
   std::iota(parent_.begin(), parent_.end(), 0u);
   if (!params_.straight_runs || points.size() < 3) return parent_;
-  points_ = points;
-  ranges_ = ranges;
-  full_turn_ = full_turn;
+  returns_ = WrappedReturns(points, ranges, full_turn);
   // A surface at incidence ι puts consecutive returns range·Δθ / cos ι apart.
   const double incidence = params_.straight_run_max_incidence_deg * std::numbers::pi / 180.0;
   gap_per_metre_ = std::abs(angle_increment) / std::cos(incidence);

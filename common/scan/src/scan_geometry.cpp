@@ -100,4 +100,11 @@ double distanceToLine(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const 
   return std::abs(d.x() * (p.y() - a.y()) - d.y() * (p.x() - a.x())) / length;
 }
 
+Eigen::AlignedBox2d returnBounds(std::span<const Eigen::Vector2d> points) {
+  Eigen::AlignedBox2d box;  // empty
+  for (const auto& p : points)
+    if (!std::isnan(p.x())) box.extend(p);
+  return box;
+}
+
 }  // namespace scanfilter

@@ -38,7 +38,7 @@ class JumpClusterRule {
 
  private:
   double noiseWidening(double range) const {
-    return params_.radius_noise_sigmas * (params_.noise_sigma_base + params_.noise_sigma_quadratic * range * range);
+    return params_.radius_noise_sigmas * rangeNoiseSigma(params_, range);
   }
 
   JumpFilterParams params_;

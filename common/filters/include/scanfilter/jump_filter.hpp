@@ -50,6 +50,7 @@ class JumpFilter {
 
   std::vector<std::uint32_t> cluster_of_;  // per beam; StraightRunJoin::kNoCluster without a return
   std::vector<std::uint32_t> group_start_;  // members of each joined cluster, grouped, in index order
+  std::vector<std::uint32_t> group_fill_;   // next free slot of each group while grouping
   std::vector<std::uint32_t> grouped_;
 };
 

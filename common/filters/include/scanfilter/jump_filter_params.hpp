@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 
 namespace scanfilter {
 
@@ -27,6 +28,10 @@ struct JumpFilterParams {
   double off_surface_sigmas = 4.0;        // offsets within this many σ(range) are noise
   double noise_sigma_base = 0.003;        // m, the sensor's range noise σ at zero range
   double noise_sigma_quadratic = 0.001;   // m per m²: σ(d) = base + quadratic·d² (triangulation)
+  // Beyond the paper: eq. 5's radius widened by this many σ(range) (the noise
+  // model above), so that range noise alone does not split a surface (at
+  // 0.1° steps σ exceeds eq. 5's radius from about 1 m). 0 = the paper.
+  double radius_noise_sigmas = 3.0;
   // Beyond the paper: a wall seen at grazing incidence has its returns far
   // apart (range·Δθ / cos incidence), farther than eq. 5's radius, so it falls
   // apart into clusters small enough for eq. 7 to delete. Consecutive returns
@@ -35,13 +40,20 @@ struct JumpFilterParams {
   // `straight_run_max_incidence_deg` would put them, join one cluster when
   // the run has at least `straight_run_min_points` returns (a short run of
   // mixed returns between an edge and its background is no surface).
-  // Beyond the paper: eq. 5's radius widened by this many σ(range) (the noise
-  // model above), so that range noise alone does not split a surface (at
-  // 0.1° steps σ exceeds eq. 5's radius from about 1 m). 0 = the paper.
-  double radius_noise_sigmas = 3.0;
   bool straight_runs = true;
   double straight_run_max_incidence_deg = 85.0;
   int straight_run_min_points = 5;
 };
+
+// The sensor's range noise σ(range) of the noise model above.
+inline double rangeNoiseSigma(const JumpFilterParams& p, double range) {
+  return p.noise_sigma_base + p.noise_sigma_quadratic * range * range;
+}
+
+// How far off a line a return may lie and still be on it: the smallest
+// offset that counts, or off_surface_sigmas · σ(range) when larger.
+inline double offSurfaceTolerance(const JumpFilterParams& p, double range) {
+  return std::max(p.off_surface_min, p.off_surface_sigmas * rangeNoiseSigma(p, range));
+}
 
 }  // namespace scanfilter

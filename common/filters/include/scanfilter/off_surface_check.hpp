@@ -36,7 +36,6 @@ class OffSurfaceCheck {
   static bool isOffLine(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b, double tol);
 
  private:
-  double tolerance(double range) const;
 
   JumpFilterParams params_;
   std::vector<std::uint32_t> marked_;

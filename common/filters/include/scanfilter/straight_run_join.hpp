@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include "scanfilter/jump_filter_params.hpp"
+#include "scanfilter/wrapped_returns.hpp"
 
 namespace scanfilter {
 
@@ -32,8 +33,6 @@ class StraightRunJoin {
   // between them, and each is at most a grazing surface's spacing away: the
   // inside of a straight run.
   bool insideRun(std::int64_t i) const;
-  const Eigen::Vector2d* at(std::int64_t k) const;
-  double tolerance(double range) const;
   std::uint32_t find(std::uint32_t c);
   void unite(std::uint32_t a, std::uint32_t b);
   void joinRun(std::int64_t first, std::int64_t last, std::span<const std::uint32_t> cluster_of);
@@ -41,9 +40,7 @@ class StraightRunJoin {
   JumpFilterParams params_;
   double gap_per_metre_ = 0.0;  // largest spacing of a run's returns, per metre of range
   double min_sin_to_beam_ = 0.0;  // sine of the smallest angle between a run and the beam
-  std::span<const Eigen::Vector2d> points_;
-  std::span<const double> ranges_;
-  bool full_turn_ = false;
+  WrappedReturns returns_;
   std::vector<std::uint32_t> parent_;
 };
 

@@ -1,5 +1,6 @@
 #pragma once
 #include <optional>
+#include <span>
 #include <vector>
 
 #include <Eigen/Core>
@@ -56,6 +57,10 @@ void sensorFramePoints(const Scan& scan, const SensorInfo& sensor, BeamDirection
 void worldPoints(const Scan& scan, const SensorInfo& sensor, BeamDirectionTable& table,
                  std::vector<Eigen::Vector2d>& out);
 void worldPoints(const Scan& scan, const SensorInfo& sensor, std::vector<Eigen::Vector2d>& out);
+
+// The smallest box holding every point with a return (NaN points skipped);
+// empty when there is none.
+Eigen::AlignedBox2d returnBounds(std::span<const Eigen::Vector2d> points);
 
 // Distance of p from the line through a and b (from a when they coincide).
 double distanceToLine(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
