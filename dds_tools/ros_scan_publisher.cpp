@@ -37,11 +37,8 @@ void toLaserScan(const Scan& scan, const SensorInfo& sensor, bool upside_down, c
   const double sign = log_clockwise == upside_down ? 1.0 : -1.0;
   out.header().stamp(toTimeMsg(scan.stamp));
   out.header().frame_id(frame);
-  out.angle_min(static_cast<float>(sign * scan.angle_min));
-  out.angle_increment(static_cast<float>(sign * scan.angle_increment));
-  out.angle_max(static_cast<float>(sign * (scan.angle_min + scan.angle_increment * static_cast<double>(scan.size() - 1))));
-  out.range_min(static_cast<float>(sensor.range_min));
-  out.range_max(static_cast<float>(sensor.range_max));
+  setLaserScanGeometry(scan.angle_min, scan.angle_increment, scan.size(), sign, sensor.range_min, sensor.range_max,
+                       out);
   const auto recorded = scan.rangesAsRecorded();
   out.ranges().resize(recorded.size());
   for (std::size_t i = 0; i < recorded.size(); ++i) out.ranges()[i] = static_cast<float>(recorded[i]);

@@ -35,11 +35,18 @@ double toSeconds(const TimeMsg& t) { return t.sec() + t.nanosec() / kNanosPerSec
 
 TimeMsg wallClockNow() {
   const auto now = std::chrono::system_clock::now().time_since_epoch();
-  const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(now).count();
-  TimeMsg t;
-  t.sec(static_cast<int32_t>(ns / 1000000000LL));
-  t.nanosec(static_cast<uint32_t>(ns % 1000000000LL));
-  return t;
+  return toTimeMsg(Stamp::fromNanoseconds(std::chrono::duration_cast<std::chrono::nanoseconds>(now).count()));
+}
+
+void setLaserScanGeometry(double angle_min, double angle_increment, std::size_t beams, double sign,
+                          double range_min, double range_max, LaserScanMsg& out) {
+  out.angle_min(static_cast<float>(sign * angle_min));
+  out.angle_increment(static_cast<float>(sign * angle_increment));
+  out.angle_max(static_cast<float>(sign * (angle_min + angle_increment * static_cast<double>(beams - 1))));
+  out.time_increment(0.0f);
+  out.scan_time(0.0f);
+  out.range_min(static_cast<float>(range_min));
+  out.range_max(static_cast<float>(range_max));
 }
 
 void toMessage(const Scan& scan, const SensorInfo& sensor, std::uint64_t sequence, LabeledScanMsg& out) {
@@ -120,16 +127,9 @@ void copySourceFields(const SourceScanMsg& source, LaserScanMsg& out) {
 // A log's scan has no LaserScan of its own: ROS angles grow counter-clockwise,
 // so a clockwise sensor's beam at angle a is at -a.
 void deriveLogFields(const LabeledScanMsg& msg, const std::string& frame_id, LaserScanMsg& out) {
-  const std::size_t n = msg.ranges().size();
-  const double sign = msg.clockwise() ? -1.0 : 1.0;
   out.header().frame_id(frame_id);
-  out.angle_min(static_cast<float>(sign * msg.angle_min()));
-  out.angle_increment(static_cast<float>(sign * msg.angle_increment()));
-  out.angle_max(static_cast<float>(sign * (msg.angle_min() + msg.angle_increment() * static_cast<double>(n - 1))));
-  out.time_increment(0.0f);
-  out.scan_time(0.0f);
-  out.range_min(static_cast<float>(msg.range_min()));
-  out.range_max(static_cast<float>(msg.range_max()));
+  setLaserScanGeometry(msg.angle_min(), msg.angle_increment(), msg.ranges().size(), msg.clockwise() ? -1.0 : 1.0,
+                       msg.range_min(), msg.range_max(), out);
 }
 
 }  // namespace

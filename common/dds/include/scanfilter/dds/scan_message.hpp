@@ -33,6 +33,12 @@ double toSeconds(const TimeMsg& t);
 // Wall-clock now, for the stage timing trail.
 TimeMsg wallClockNow();
 
+// A LaserScan's angles and range limits for a scan recorded from angle_min
+// in steps of angle_increment over `beams` beams; `sign` -1 turns clockwise
+// angles into ROS's counter-clockwise ones. Times 0: a log has none.
+void setLaserScanGeometry(double angle_min, double angle_increment, std::size_t beams, double sign,
+                          double range_min, double range_max, LaserScanMsg& out);
+
 // A scan with its sensor as a LabeledScan (ranges as recorded, labels copied
 // when present, no source LaserScan).
 void toMessage(const Scan& scan, const SensorInfo& sensor, std::uint64_t sequence, LabeledScanMsg& out);
