@@ -32,11 +32,13 @@ cleanup() {
 trap cleanup EXIT
 PROM_URL=http://127.0.0.1:19090
 fail() {
-  echo "FAIL: $*"
-  echo "--- firing alerts:"; firing_alerts || true
-  for f in "$WORK"/*.log; do
-    if [ -f "$f" ]; then echo "--- $f"; tail -n 20 "$f"; fi
-  done
+  {
+    echo "FAIL: $*"
+    echo "--- firing alerts:"; firing_alerts || true
+    for f in "$WORK"/*.log; do
+      if [ -f "$f" ]; then echo "--- $f"; tail -n 20 "$f"; fi
+    done
+  } >&2
   exit 1
 }
 command -v prometheus > /dev/null || fail "prometheus is not installed (scripts/install-deps.sh)"
@@ -88,8 +90,8 @@ firing_alerts() {
     sed -n '/"state":"firing"/s/^{"labels":{"alertname":"\([^"]*\)".*"service":"\([^"]*\)".*/\1 \2/p' | sort
 }
 
-# wait_firing NAME SERVICE: until that alert fires for that service; prints
-# the milliseconds it took.
+# wait_firing NAME SERVICE: until that alert fires for that service;
+# WAITED_MS: how long that took.
 wait_firing() {
   local start_ms deadline alerts
   start_ms=$(date +%s%3N)
@@ -100,7 +102,7 @@ wait_firing() {
     [ "$SECONDS" -lt "$deadline" ] || fail "$1 did not fire for $2 within $WAIT_S s"
     sleep 0.1
   done
-  echo $(( $(date +%s%3N) - start_ms ))
+  WAITED_MS=$(( $(date +%s%3N) - start_ms ))
 }
 
 # wait_only_firing EXPECTED: until the firing alerts are exactly EXPECTED
@@ -200,6 +202,9 @@ wait_query 'scanfilter_map_saves_total >= bool 5' 1 "five saves of the map"
 healthy="ScanfilterEndToEndLatencyOverBudget jump_filter
 ScanfilterEndToEndLatencyOverBudget penetration_filter"
 wait_only_firing "$healthy"
+# The services' own `service` label is kept as it is (honor_labels).
+renamed=$(prom_query 'count({job="scanfilter",exported_service!=""})')
+[ -z "$renamed" ] || fail "$renamed series have an exported_service label: the scrape config renamed the services' labels"
 rules=$(curl -s --max-time 5 "$PROM_URL/api/v1/rules" || true)
 ok_rules=$(grep -o '"health":"ok"' <<<"$rules" | wc -l)
 rule_count=$(grep -cE '^      - (alert|record): ' <<<"$shipped")
@@ -209,13 +214,13 @@ echo "healthy: only the latency alert fires (test budget 10 us); the map was sav
 
 # 2. Malformed samples into the jump_filter.
 "$BUILD/tests/bad_sample_sender" "$DOMAIN" "$PROFILES" > "$WORK/sender.log" 2>&1 || fail "bad_sample_sender failed"
-ms=$(wait_firing ScanfilterSamplesRejected jump_filter)
-echo "SamplesRejected fired ${ms} ms after the bad samples were acknowledged"
+wait_firing ScanfilterSamplesRejected jump_filter
+echo "SamplesRejected fired ${WAITED_MS} ms after the bad samples were acknowledged"
 
 # 3. The map's folder disappears: saves fail, the publisher keeps running.
 rm -rf "$WORK/maps"
-ms=$(wait_firing ScanfilterMapNotSaved map_publisher)
-echo "MapNotSaved fired ${ms} ms after the map's folder was removed (test limit 5 s)"
+wait_firing ScanfilterMapNotSaved map_publisher
+echo "MapNotSaved fired ${WAITED_MS} ms after the map's folder was removed (test limit 5 s)"
 kill -0 "$MAP" 2> /dev/null || fail "map_publisher ended when a save failed"
 grep -q "saving the map to .* failed" "$WORK/map.log" || fail "map_publisher did not log the failed save"
 
@@ -223,7 +228,7 @@ grep -q "saving the map to .* failed" "$WORK/map.log" || fail "map_publisher did
 kill -TERM "$DRIVER"; wait "$DRIVER" || true
 stopped_ms=$(date +%s%3N)
 for svc in scan_ingest jump_filter penetration_filter map_publisher; do
-  wait_firing ScanfilterNoScans "$svc" > /dev/null
+  wait_firing ScanfilterNoScans "$svc"
 done
 echo "NoScans fired for all four $(( $(date +%s%3N) - stopped_ms )) ms after the stream stopped (window 5 s)"
 alerts=$(firing_alerts)
@@ -232,7 +237,7 @@ if grep -q '^ScanfilterServiceDown ' <<<"$alerts"; then fail "a service is down 
 # 5. SIGKILL the jump_filter.
 kill -KILL "$JUMP"
 killed_ms=$(date +%s%3N)
-wait_firing ScanfilterServiceDown jump_filter > /dev/null
+wait_firing ScanfilterServiceDown jump_filter
 down_ms=$(( $(date +%s%3N) - killed_ms ))
 echo "ServiceDown fired ${down_ms} ms after kill -9 of jump_filter (test for: 1s, scrape and evaluation every 1 s)"
 alerts=$(firing_alerts)
@@ -240,8 +245,8 @@ down=$(grep '^ScanfilterServiceDown ' <<<"$alerts" || true)
 [ "$down" = "ScanfilterServiceDown jump_filter" ] || fail "ServiceDown fires for: $down"
 # The liveliness gauge (scanfilter_upstream_alive) where the services export it.
 if [ -n "$(prom_query 'count(scanfilter_upstream_alive)')" ]; then
-  ms=$(wait_firing ScanfilterUpstreamNotAlive penetration_filter)
-  echo "UpstreamNotAlive fired for penetration_filter ${ms} ms after ServiceDown"
+  wait_firing ScanfilterUpstreamNotAlive penetration_filter
+  echo "UpstreamNotAlive fired for penetration_filter ${WAITED_MS} ms after ServiceDown"
 else
   echo "UpstreamNotAlive not exercised: these services export no scanfilter_upstream_alive (promtool tests cover the rule)"
 fi
