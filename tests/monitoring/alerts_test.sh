@@ -5,10 +5,13 @@
 # them. Runs in a private network namespace when possible (unshare -n).
 #
 #   alerts_test.sh BUILD_DIR SOURCE_DIR
+#   ALERT_FOR_S=10 alerts_test.sh ...   every `for:` 10 s (the shipped
+#                                       ServiceDown's), to measure with it
 #
 # Prometheus gets a test copy of the shipped rules with shorter waits, made
-# by checked substitutions (each must change exactly the lines it names):
-#   - every alert's `for:` becomes 1 s (the shipped ones are 0 s to 1 min);
+# by checked substitutions (each must match exactly the lines it names):
+#   - every alert's `for:` becomes ALERT_FOR_S (default 1) seconds (the
+#     shipped ones are 0 s to 1 min);
 #   - the end-to-end latency budget becomes 10 us, under any real DDS hop, so
 #     that the latency alert fires on the real histograms of a healthy run;
 #   - the map's unsaved limit becomes 5 s instead of 10 min.
@@ -43,24 +46,26 @@ fail() {
 }
 command -v prometheus > /dev/null || fail "prometheus is not installed (scripts/install-deps.sh)"
 
+ALERT_FOR_S=${ALERT_FOR_S:-1}
+[[ "$ALERT_FOR_S" =~ ^[0-9]+$ ]] || fail "ALERT_FOR_S: whole seconds expected, got $ALERT_FOR_S"
 # How long the test waits for a condition (an alert, a match) at most: the
-# alerts here need one scrape, one evaluation and their 1 s `for`; a loaded
-# 2-core machine gets 15x that.
-WAIT_S=30
+# alerts here need one scrape, one evaluation and their `for`; a loaded
+# 2-core machine gets 10x that.
+WAIT_S=$((30 + ALERT_FOR_S))
 STREAM_HZ=20        # scans per second of the robot driver (ros_scan_publisher)
 STREAM_FRAMES=2400  # at most 2 min of scans: the stream is stopped well before
 SHIPPED_RULES="$SRC/deploy/monitoring/alerts.yml"
 
-# sed_checked FILE EXPECTED_LINES SED_EXPRESSION: applies it in place and
-# fails unless exactly EXPECTED_LINES lines changed (a pattern that no longer
-# matches the shipped file must not leave the test on the shipped values).
+# sed_checked FILE EXPECTED_LINES PATTERN REPLACEMENT: replaces (sed -E,
+# delimiter |) PATTERN in FILE, and fails unless exactly EXPECTED_LINES lines
+# match it (a pattern that no longer matches the shipped file must not leave
+# the test on the shipped values).
 sed_checked() {
-  local file=$1 expected=$2 expr=$3 before changed
-  before=$(cat "$file")
-  sed -i -E "$expr" "$file"
-  changed=$(diff <(echo "$before") "$file" || true)
-  changed=$(grep -c '^>' <<<"$changed" || true)
-  [ "$changed" = "$expected" ] || fail "test copy of $(basename "$file"): '$expr' changed $changed lines, expected $expected"
+  local file=$1 expected=$2 pattern=$3 replacement=$4 matching
+  matching=$(grep -cE "$pattern" "$file" || true)
+  [ "$matching" = "$expected" ] ||
+    fail "test copy of $(basename "$file"): $matching lines match '$pattern', expected $expected"
+  sed -i -E "s|$pattern|$replacement|" "$file"
 }
 
 # The test copy of the rules.
@@ -69,16 +74,16 @@ cp "$SHIPPED_RULES" "$RULES"
 shipped=$(cat "$SHIPPED_RULES")
 alert_count=$(grep -c '^      - alert: ' <<<"$shipped")
 [ "$alert_count" -ge 6 ] || fail "only $alert_count alerts in $SHIPPED_RULES"
-sed_checked "$RULES" "$alert_count" 's/^(        for: )[0-9]+[smh]$/\11s/'
-sed_checked "$RULES" 1 's/^(        expr: vector\()0\.025\)$/\10.00001)/'
-sed_checked "$RULES" 1 's/^(        expr: vector\()600\)$/\15)/'
+sed_checked "$RULES" "$alert_count" '^        for: [0-9]+[smh]$' "        for: ${ALERT_FOR_S}s"
+sed_checked "$RULES" 1 '^        expr: vector\(0\.025\)$' '        expr: vector(0.00001)'
+sed_checked "$RULES" 1 '^        expr: vector\(600\)$' '        expr: vector(5)'
 promtool check rules "$RULES" > /dev/null || fail "the test copy of the rules does not load"
 
 # The test copy of the scrape config: the services on 1947x, the rules above.
 PROM_CONFIG="$WORK/prometheus.yml"
 cp "$SRC/deploy/monitoring/prometheus.yml" "$PROM_CONFIG"
-sed_checked "$PROM_CONFIG" 4 's/"127\.0\.0\.1:947([1-4])"/"127.0.0.1:1947\1"/'
-sed_checked "$PROM_CONFIG" 1 "s#^  - alerts\\.yml\$#  - $RULES#"
+sed_checked "$PROM_CONFIG" 4 '"127\.0\.0\.1:947([1-4])"' '"127.0.0.1:1947\1"'
+sed_checked "$PROM_CONFIG" 1 '^  - alerts\.yml$' "  - $RULES"
 
 # One alert per line, "NAME SERVICE", of the firing alerts in
 # /api/v1/alerts (labels are sorted, alertname first; only labels carry a
@@ -225,8 +230,8 @@ kill -0 "$MAP" 2> /dev/null || fail "map_publisher ended when a save failed"
 grep -q "saving the map to .* failed" "$WORK/map.log" || fail "map_publisher did not log the failed save"
 
 # 4. The robot driver stops: no scans anywhere.
-kill -TERM "$DRIVER"; wait "$DRIVER" || true
 stopped_ms=$(date +%s%3N)
+kill -TERM "$DRIVER"; wait "$DRIVER" || true
 for svc in scan_ingest jump_filter penetration_filter map_publisher; do
   wait_firing ScanfilterNoScans "$svc"
 done
@@ -239,7 +244,7 @@ kill -KILL "$JUMP"
 killed_ms=$(date +%s%3N)
 wait_firing ScanfilterServiceDown jump_filter
 down_ms=$(( $(date +%s%3N) - killed_ms ))
-echo "ServiceDown fired ${down_ms} ms after kill -9 of jump_filter (test for: 1s, scrape and evaluation every 1 s)"
+echo "ServiceDown fired ${down_ms} ms after kill -9 of jump_filter (for: ${ALERT_FOR_S}s, scrape and evaluation every 1 s)"
 alerts=$(firing_alerts)
 down=$(grep '^ScanfilterServiceDown ' <<<"$alerts" || true)
 [ "$down" = "ScanfilterServiceDown jump_filter" ] || fail "ServiceDown fires for: $down"
