@@ -253,8 +253,8 @@ edge_shm=$(on edge ls /dev/shm)
 info=$("$SF" info "$WORK/live.scanlog.jsonl")
 beams=$(sed -n 's/^scans: *[0-9]* (\([0-9]*\)-.*/\1/p' <<<"$info")  # the fewest in a scan
 [ -n "$beams" ] || fail "no beam count in: $info"
-# The least the scans can weigh on the wire: a float32 range per beam.
-payload=$(( FRAMES * beams * 4 ))
+# The least the scans can weigh on the wire: their ranges (float64 in a LabeledScan).
+payload=$(( FRAMES * beams * 8 ))
 echo "labels: $FRAMES scans of $beams beams each equal the offline replay's"
 echo "bytes while the scans flowed: robot eth0 sent $robot_tx, mapper eth0 received $mapper_rx," \
   "edge loopback carried $edge_lo; the scans' ranges alone are $payload"
