@@ -36,13 +36,13 @@ int main(int argc, char** argv) {
   app.add_option("--namespace", ns, "topic namespace (rt/<ns>/...)");
   app.add_option("--topic", topic, "topic name under rt/<ns>/")->capture_default_str();
   app.add_option("--profiles-file", participant_settings.profiles_file, "Fast DDS XML profiles")->capture_default_str();
-  app.add_option("--config", config,
-                 "a YAML file with only a `service` section (config/scan_ingest.yaml documents it): its domain, "
-                 "profile and discovery replace --domain and --profiles-file, e.g. to record on another host");
   app.add_option("--count", count, "stop after this many scans (0: until SIGINT/SIGTERM)");
   app.add_option("--timeout", timeout_s, "stop after this many seconds (0: no limit)");
   app.add_option("--idle-exit", idle_exit_s, "stop once no scan arrived for this many seconds after the first (0: never)");
   app.add_option("--queue-depth", queue_depth, "reliable reader queue (match the services')")->capture_default_str();
+  app.add_option("--config", config,
+                 "a YAML file with only a `service` section (config/scan_ingest.yaml documents it): its domain, "
+                 "profile and discovery replace --domain and --profiles-file, e.g. to record on another host");
   app.set_version_flag("--version", "scan_recorder (scanfilter " SCANFILTER_VERSION ")");
   CLI11_PARSE(app, argc, argv);
 

@@ -18,7 +18,7 @@
 # transport must not be able to carry data between "hosts". The checks: every
 # scan arrives with the offline replay's labels; the scans crossed the veth
 # links (interface byte counters); on the edge the filters' data stayed in
-# shared memory (its loopback carried far less than the scans' volume and its
+# shared memory (its loopback carried far less than the robot sent, and its
 # /dev/shm holds Fast DDS segments). Needs root (ip netns); exits 77 (ctest:
 # skipped) without it.
 set -euo pipefail
@@ -28,7 +28,7 @@ if [ "$(id -u)" != 0 ]; then
   echo "SKIP: needs root to create network namespaces (ip netns)"
   exit $SKIP
 fi
-for tool in ip nsenter unshare curl fast-discovery-server; do
+for tool in ip ss nsenter unshare curl fast-discovery-server; do
   command -v "$tool" > /dev/null || { echo "FAIL: $tool is not installed (scripts/install-deps.sh)"; exit 1; }
 done
 
