@@ -1,7 +1,9 @@
 #include "scanfilter/dds/discovery_settings.hpp"
 
 #include <arpa/inet.h>
+#include <ifaddrs.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <memory>
 
@@ -42,6 +44,22 @@ bool isIpv4(const std::string& text) {
 
 bool isLoopback(const std::string& ipv4) { return ipv4.rfind("127.", 0) == 0; }
 
+// This host's IPv4 addresses. UDP bound to any other one would not come up
+// (Fast DDS logs an error and carries on with a participant nobody reaches).
+std::vector<std::string> hostAddresses() {
+  std::vector<std::string> out;
+  ifaddrs* list = nullptr;
+  if (getifaddrs(&list) != 0) return out;
+  for (const ifaddrs* a = list; a != nullptr; a = a->ifa_next) {
+    if (a->ifa_addr == nullptr || a->ifa_addr->sa_family != AF_INET) continue;
+    char text[INET_ADDRSTRLEN] = {};
+    if (inet_ntop(AF_INET, &reinterpret_cast<const sockaddr_in*>(a->ifa_addr)->sin_addr, text, sizeof text))
+      out.emplace_back(text);
+  }
+  freeifaddrs(list);
+  return out;
+}
+
 class DiscoveryReader {
  public:
   explicit DiscoveryReader(YamlSection& service)
@@ -54,6 +72,7 @@ class DiscoveryReader {
     s.configured = section_.present();
     if (!s.configured) return s;
     readAddresses("interfaces", s.interfaces, "this host's IPv4 address, e.g. 10.0.1.1");
+    requireOwnAddresses(s.interfaces);
     readAddresses("peers", s.peers, "another host's IPv4 address, e.g. 10.0.1.2");
     readServers(s.servers);
     section_.read("shared_memory", s.shared_memory);
@@ -73,6 +92,19 @@ class DiscoveryReader {
       const std::string text = item.IsScalar() ? item.Scalar() : "a non-scalar";
       if (!isIpv4(text) || text == "0.0.0.0") failAt(item, key, "expected " + expected + ", got \"" + text + "\"");
       out.push_back(text);
+    }
+  }
+
+  // Each interface is an address of the host reading the config (where the service runs).
+  void requireOwnAddresses(const std::vector<std::string>& interfaces) {
+    const std::vector<std::string> own = hostAddresses();
+    const YAML::Node list = section_.node()["interfaces"];
+    for (std::size_t i = 0; i < interfaces.size(); ++i) {
+      if (std::find(own.begin(), own.end(), interfaces[i]) != own.end()) continue;
+      std::string known;
+      for (const auto& a : own) known += (known.empty() ? "" : ", ") + a;
+      const YAML::Node at = list ? list[i] : section_.node();
+      failAt(at, "interfaces", "expected an address of this host (" + known + "), got \"" + interfaces[i] + "\"");
     }
   }
 
