@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <limits>
 #include <memory>
 
 #include <fastdds/rtps/attributes/ServerAttributes.h>
@@ -71,9 +72,9 @@ class DiscoveryReader {
     DiscoverySettings s;
     s.configured = section_.present();
     if (!s.configured) return s;
-    readAddresses("interfaces", s.interfaces, "this host's IPv4 address, e.g. 10.0.1.1");
+    readAddresses("interfaces", s.interfaces, "this host's IPv4 address", "10.0.1.1");
     requireOwnAddresses(s.interfaces);
-    readAddresses("peers", s.peers, "another host's IPv4 address, e.g. 10.0.1.2");
+    readAddresses("peers", s.peers, "another host's IPv4 address", "10.0.1.2");
     readServers(s.servers);
     section_.read("shared_memory", s.shared_memory);
     section_.rejectUnknownKeys();
@@ -83,14 +84,15 @@ class DiscoveryReader {
 
  private:
   // A list of addresses, each one checked where it is written.
-  void readAddresses(const char* key, std::vector<std::string>& out, const std::string& expected) {
+  void readAddresses(const char* key, std::vector<std::string>& out, const std::string& what, const std::string& example) {
     const YAML::Node list = section_.take(key);
     if (!list) return;
-    if (!list.IsSequence()) section_.fail(key, "expected a list like [" + expected.substr(expected.find("e.g. ") + 5) + "]");
+    if (!list.IsSequence()) section_.fail(key, "expected a list like [" + example + "]");
     out.clear();
     for (const auto& item : list) {
       const std::string text = item.IsScalar() ? item.Scalar() : "a non-scalar";
-      if (!isIpv4(text) || text == "0.0.0.0") failAt(item, key, "expected " + expected + ", got \"" + text + "\"");
+      if (!isIpv4(text) || text == "0.0.0.0")
+        failAt(item, key, "expected " + what + ", e.g. " + example + ", got \"" + text + "\"");
       out.push_back(text);
     }
   }
@@ -129,7 +131,8 @@ class DiscoveryReader {
         const std::string port = text.substr(colon + 1);
         char* end = nullptr;
         const long value = std::strtol(port.c_str(), &end, 10);
-        if (port.empty() || *end != '\0' || value < 1 || value > 65535) failAt(item, "servers", expected);
+        if (port.empty() || *end != '\0' || value < 1 || value > std::numeric_limits<std::uint16_t>::max())
+          failAt(item, "servers", expected);
         server.port = static_cast<std::uint16_t>(value);
       }
       if (!isIpv4(server.address) || server.address == "0.0.0.0") failAt(item, "servers", expected);
