@@ -61,10 +61,11 @@ set(CPACK_PACKAGE_VENDOR scanfilter)
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "2D LiDAR scan filter (two-step jump and penetration filter) as Fast DDS services")
 set(CPACK_PACKAGE_DESCRIPTION
     "scan_ingest, jump_filter, penetration_filter and map_publisher as systemd services (scanfilter.target), the scanfilter command-line tool, and the scan recorder and publisher.")
-set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
-# DESTDIR staging: the install scripts see the real prefix /usr, so the
+# DESTDIR staging with the real prefix: the install scripts see /usr, so the
 # configs land in /etc and not /usr/etc.
 set(CPACK_SET_DESTDIR ON)
+set(CPACK_INSTALL_PREFIX /usr)
+set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_MAINTAINER "scanfilter developers <scanfilter@localhost>")
 set(CPACK_DEBIAN_PACKAGE_SECTION science)

@@ -8,6 +8,8 @@
 # Set by the caller: SCANFILTER_SOURCE_DIR, SCANFILTER_STAGING_DIR,
 # SCANFILTER_VERSION and the GNUInstallDirs relative dirs SCANFILTER_BINDIR,
 # SCANFILTER_SYSCONFDIR, SCANFILTER_LOCALSTATEDIR, SCANFILTER_DOCDIR.
+cmake_policy(PUSH)
+cmake_policy(VERSION 3.25)
 set(prefix "${CMAKE_INSTALL_PREFIX}")
 if(prefix STREQUAL "/usr")
   set(SCANFILTER_CONFDIR "/etc/scanfilter")
@@ -90,3 +92,4 @@ file(INSTALL DESTINATION "${prefix}/lib/systemd/system" TYPE FILE FILES ${staged
 if(NOT prefix STREQUAL "/usr")
   file(MAKE_DIRECTORY "$ENV{DESTDIR}${SCANFILTER_STATEDIR}")
 endif()
+cmake_policy(POP)
