@@ -2,7 +2,8 @@
 # The units' SystemCallFilter= against what the services really call. systemd
 # is not PID 1 on the test machine, so the units' seccomp filter cannot be
 # applied there; instead each service runs a scan log through the pipeline
-# (start, discovery, processing, metrics scrapes, the map saved, SIGTERM)
+# (start, discovery, processing, metrics scrapes, the map saved, sd_notify
+# with the watchdog, SIGTERM)
 # under strace, and every system call it made must be one its unit allows
 # (the unit's allow and deny lists expanded by this systemd's
 # `systemd-analyze syscall-filter`). A call outside the filter would fail
@@ -20,8 +21,9 @@ fi
 DOMAIN=$(( (RANDOM % 200) + 10 ))
 WORK=$(mktemp -d)
 PIDS=()
+LISTENER=""
 cleanup() {
-  for pid in "${PIDS[@]}"; do kill -KILL "$pid" 2>/dev/null || true; done
+  for pid in "${PIDS[@]}" $LISTENER; do kill -KILL "$pid" 2>/dev/null || true; done
   rm -rf "$WORK"
 }
 trap cleanup EXIT
@@ -102,6 +104,14 @@ wait_matched() {  # port endpoint topic
     sleep 0.2
   done
 }
+
+# The notify socket and watchdog the units give them, so that sd_notify's
+# calls are traced too: a listener that reads and drops the messages.
+export NOTIFY_SOCKET="$WORK/notify.sock" WATCHDOG_USEC=2000000
+python3 -c 'import socket, sys
+s = socket.socket(socket.AF_UNIX, socket.SOCK_DGRAM); s.bind(sys.argv[1])
+while True: s.recv(4096)' "$NOTIFY_SOCKET" &
+LISTENER=$!
 
 PROFILES="$SRC/deploy/fastdds-loopback.xml"
 "$BUILD/tools/scanfilter" simulate --scene hall --seed 7 --max-frames 40 -o "$WORK/in.scanlog.jsonl" > /dev/null
