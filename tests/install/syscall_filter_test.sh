@@ -117,7 +117,7 @@ PROFILES="$SRC/deploy/fastdds-loopback.xml"
 "$BUILD/tools/scanfilter" simulate --scene hall --seed 7 --max-frames 40 -o "$WORK/in.scanlog.jsonl" > /dev/null
 cat > "$WORK/map.yaml" <<YAML
 service: {domain_id: $DOMAIN, profiles_file: $PROFILES, metrics_address: 127.0.0.1:19474}
-publishing: {save_path: $WORK/map, save_period_s: 0.5, load_on_start: true}
+publishing: {save_path: $WORK/map, save_period_s: 0.5}
 YAML
 cat > "$WORK/ingest.yaml" <<YAML
 service: {domain_id: $DOMAIN, profiles_file: $PROFILES, metrics_address: 127.0.0.1:19471}
