@@ -49,6 +49,9 @@ if(SCANFILTER_BUILD_SERVICES)
     include(\"${PROJECT_SOURCE_DIR}/cmake/install_layout.cmake\")")
 endif()
 install(FILES README.md docs/operations.md DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/scanfilter)
+# The Prometheus scrape config, alert rules and Grafana dashboard, for the
+# operator to copy (docs/operations.md, "Monitoring and alerts").
+install(DIRECTORY deploy/monitoring/ DESTINATION ${CMAKE_INSTALL_DATADIR}/scanfilter/monitoring)
 
 # The .deb: prefix /usr, so configs go to /etc/scanfilter and saved maps to
 # /var/lib/scanfilter (the same rule in install_layout.cmake and
