@@ -20,7 +20,7 @@ WORK=$(mktemp -d)
 declare -A PID PORT=([scan_ingest]=19471 [jump_filter]=19472 [penetration_filter]=19473 [map_publisher]=19474)
 cleanup() {
   for pid in "${PID[@]}"; do kill -KILL "$pid" 2>/dev/null || true; done
-  rm -rf "$WORK"
+  [ -n "${KEEP_WORK:-}" ] || rm -rf "$WORK"
 }
 trap cleanup EXIT
 fail() {
@@ -108,6 +108,11 @@ declare -A UPSTREAM_DOWN_SEEN
 for kill in "${KILLS[@]}"; do
   name=${kill%%:*} at=${kill##*:}
   wait_for "the stream reached scan $at before killing $name" 60 published_at_least "$at"
+  # ...and flows end to end: the map publisher is getting scans again
+  # (after the previous restart a reader waits out the dead writer's lease).
+  base=$(gauge 19474 'scanfilter_scans_received_total{service="map_publisher"}')
+  map_flowing() { [ "$(gauge 19474 'scanfilter_scans_received_total{service="map_publisher"}')" -ge $(( ${base:-0} + 20 )) ]; }
+  wait_for "the map publisher to get scans before killing $name" 30 map_flowing
   for other in "${!PORT[@]}"; do
     [ "$other" = "$name" ] || alive "$other" || [ "$other" = scan_ingest ] || fail "$other died before $name was killed"
   done
