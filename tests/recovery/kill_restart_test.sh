@@ -10,7 +10,7 @@
 # figures docs/operations.md quotes.
 #
 #   kill_restart_test.sh BUILD_DIR SOURCE_DIR
-set -euo pipefail
+set -Eeuo pipefail
 BUILD="$1" SRC="$2"
 if [ -z "${SCANFILTER_IN_NETNS:-}" ] && [ "$(id -u)" = 0 ] && unshare -n true 2>/dev/null; then
   exec unshare -n env SCANFILTER_IN_NETNS=1 bash -c 'ip link set lo up && exec bash "$0" "$@"' "$0" "$@"
@@ -23,11 +23,18 @@ cleanup() {
   [ -n "${KEEP_WORK:-}" ] || rm -rf "$WORK"
 }
 trap cleanup EXIT
-fail() {
+fail() {  # the failing check, the tail of every process log; the work dir is kept for a look
+  trap - ERR
   echo "FAIL: $*"
-  for f in "$WORK"/*.log; do echo "--- $f"; tail -n 25 "$f"; done
+  for f in "$WORK"/*.log "$WORK"/*.diff; do
+    if [ -f "$f" ]; then echo "--- $f"; tail -n 25 "$f"; fi
+  done
+  KEEP_WORK=1
+  echo "work dir kept: $WORK"
   exit 1
 }
+# Any other command failing (set -e) is a failed check too: say which.
+trap 'fail "line $LINENO: \`$BASH_COMMAND\` exited $?"' ERR
 SF="$BUILD/tools/scanfilter"
 CHECK="$BUILD/tests/recovery/recovery_check"
 FRAMES=600   # 60 s of the hall at 10 Hz, replayed at 4x: 15 s of stream at 40 Hz, plus the holds
@@ -58,7 +65,7 @@ matched_at_least() {  # port endpoint topic n
   v=$(gauge "$1" "scanfilter_dds_matched{endpoint=\"$2\",service=\"$(svc_of "$1")\",topic=\"$3\"}")
   [ "${v:-0}" -ge "$4" ]
 }
-svc_of() { for s in "${!PORT[@]}"; do [ "${PORT[$s]}" = "$1" ] && echo "$s"; done; }
+svc_of() { for s in "${!PORT[@]}"; do [ "${PORT[$s]}" = "$1" ] && echo "$s"; done; return 0; }
 
 published() {  # scans the ingest has published so far, across its restarts (its progress file)
   sed -n 's/^published_scans: //p' "$WORK/ingest.progress" 2>/dev/null || echo 0
