@@ -220,16 +220,45 @@ cost=$("$SF" diff "$WORK/whole.offline.scanlog.jsonl" "$WORK/live.scanlog.jsonl"
 echo "penetration_filter restarted at scan $first_pen with an empty cache; against a replay that kept its cache: $cost"
 
 # Map: the saved map equals the offline map of exactly the scans the map
-# publisher integrated: all recorded ones but those after its last save
-# before the kill and before the first one the restarted publisher got.
+# publisher integrated: all that came out of the penetration filter but those
+# after its last save before the kill and before the first one the restarted
+# publisher got.
 map_log=$(cat "$WORK/map_publisher.log")
 saved_last=$(sed -n 's/.*continuing from .* the last sequence \([0-9]*\)).*/\1/p' <<<"$map_log" | head -n 1)
+saved_scans=$(sed -n 's/.*continuing from .*, \([0-9]*\) scans, the last sequence.*/\1/p' <<<"$map_log" | head -n 1)
 first_map=$(sed -n 's/.*first scan integrated since start: sequence \([0-9]*\).*/\1/p' <<<"$map_log" | sed -n 2p)
-[ -n "$saved_last" ] && [ -n "$first_map" ] || fail "map_publisher did not log where it continued (saved $saved_last, first $first_map)"
-map_lost=$(awk -v a="$saved_last" -v b="$first_map" '$1 > a && $1 < b' "$WORK/sequences" | wc -l)
-result=$("$CHECK" map "$WORK/in.scanlog.jsonl" "$WORK/live.scanlog.jsonl" "$WORK/map_publisher.yaml" "$WORK/map" \
-           $((saved_last + 1)) "$first_map") || fail "recovery_check map failed"
-echo "map_publisher: saved up to scan $saved_last, resumed at scan $first_map: $map_lost recorded scans not in the map; $result"
+[ -n "$saved_last" ] && [ -n "$saved_scans" ] && [ -n "$first_map" ] ||
+  fail "map_publisher did not log where it continued (saved $saved_last, $saved_scans scans, first $first_map)"
+# The dead penetration filter's last scans reached its two readers in order
+# but not equally far: the map may hold scans the recorder lost (or lack some
+# it got). The saved count says how many: they are the first (last) ones of the
+# run lost at that kill, and their labels are the offline replay's (which
+# equals the live labels, checked above).
+recorded_upto=$(awk -v a="$saved_last" '$1 <= a' "$WORK/sequences" | wc -l)
+map_extra=$((saved_scans - recorded_upto))
+last_before=$(awk -v f="$first_pen" '$1 < f {last = $1} END {print last}' "$WORK/sequences")
+awk -v f="$first_pen" '$1 < f' "$WORK/sequences" > "$WORK/map_before.seq"
+if [ "$map_extra" -gt 0 ]; then seq $((last_before + 1)) $((last_before + map_extra)) >> "$WORK/map_before.seq"
+elif [ "$map_extra" -lt 0 ]; then head -n "$map_extra" "$WORK/map_before.seq" > "$WORK/map_before.tmp" && mv "$WORK/map_before.tmp" "$WORK/map_before.seq"
+fi
+[ "$map_extra" -le 0 ] || [ $((last_before + map_extra)) -lt "$first_pen" ] ||
+  fail "the saved map holds $map_extra scans more than were recorded up to scan $saved_last, beyond the lost run"
+{ head -n 1 "$WORK/in.scanlog.jsonl"
+  awk 'NR == FNR {want[$1 + 2] = 1; next} want[FNR]' "$WORK/map_before.seq" "$WORK/in.scanlog.jsonl"
+} > "$WORK/map_before.scanlog.jsonl"
+"$SF" replay "$WORK/map_before.scanlog.jsonl" --config "$SRC/config/filter.yaml" -o "$WORK/map_integrated.scanlog.jsonl" -q
+awk -v f="$first_pen" 'NR == FNR {seq[FNR + 1] = $1; next} FNR > 1 && seq[FNR] >= f' \
+  "$WORK/sequences" "$WORK/live.scanlog.jsonl" >> "$WORK/map_integrated.scanlog.jsonl"
+"$CHECK" sequences "$WORK/in.scanlog.jsonl" "$WORK/map_integrated.scanlog.jsonl" > "$WORK/map_sequences" ||
+  fail "recovery_check sequences (map)"
+map_lost=$(awk -v a="$saved_last" -v b="$first_map" '$1 > a && $1 < b' "$WORK/map_sequences" | wc -l)
+result=$("$CHECK" map "$WORK/in.scanlog.jsonl" "$WORK/map_integrated.scanlog.jsonl" "$WORK/map_publisher.yaml" \
+           "$WORK/map" $((saved_last + 1)) "$first_map") || fail "recovery_check map failed"
+echo "map_publisher: saved $saved_scans scans up to scan $saved_last ($map_extra not recorded), resumed at scan" \
+     "$first_map: $map_lost scans not in the map; $result"
 [[ "$result" =~ ^cells:\ 0\ differ ]] || fail "the saved map differs from the offline map of the scans it integrated"
+final_scans=$(sed -n 's/^scans_integrated: //p' "$WORK/map.progress")
+[[ "$result" =~ offline\ scans:\ $final_scans\; ]] ||
+  fail "the map says it integrated $final_scans scans, the offline map of those it got has other: $result"
 echo "total $((SECONDS - t0)) s"
 echo "PASS: kill_restart"
