@@ -91,8 +91,8 @@ class MapService {
     if (settings_.save_path.empty()) return;
     std::lock_guard lock(mutex_);
     if (!grid_.bounds().empty()) {
-      saveMap(grid_, settings_.save_path);
-      progress_.save(settings_.save_path);  // which scans those files hold
+      saveMap(grid_, settings_.save_path, progress_.toText());  // the state and which scans it holds, in one rename
+      progress_.save(settings_.save_path);  // a readable copy
     }
   }
 
@@ -156,8 +156,9 @@ int main(int argc, char** argv) {
     const PublishSettings publish = readPublishSettings(config);
     map_service::MapProgress progress;
     if (publish.load_on_start && !publish.save_path.empty() && std::filesystem::exists(publish.save_path + ".logodds")) {
-      loadMapState(grid, publish.save_path);
-      progress = map_service::MapProgress::load(publish.save_path);
+      const std::string note = loadMapState(grid, publish.save_path);
+      progress = note.empty() ? map_service::MapProgress::load(publish.save_path)  // saved before the note existed
+                              : map_service::MapProgress::parse(note, publish.save_path + ".logodds");
       spdlog::info("continuing from {}.logodds ({} x {} cells, {} scans, the last sequence {})", publish.save_path,
                    grid.bounds().width(), grid.bounds().height(), progress.scans_integrated,
                    progress.last_sequence ? std::to_string(*progress.last_sequence) : "none");

@@ -6,8 +6,11 @@ namespace scanfilter::ingest {
 
 // Where a replay got to, kept in a small file so that a restarted ingest
 // (after a crash, as systemd restarts it) continues after the last scan it
-// handed to DDS instead of replaying the log from its start. The count, not
-// a stamp: some logs' stamps step back. "" = no file, always from the start.
+// handed to DDS instead of replaying the log from its start. A scan is
+// recorded just before it is written: after a kill no scan is sent twice,
+// and at most the one being written is lost besides the unacknowledged ones.
+// The count, not a stamp: some logs' stamps step back. "" = no file, always
+// from the start.
 class PlaybackProgress {
  public:
   explicit PlaybackProgress(std::string path) : path_(std::move(path)) {}

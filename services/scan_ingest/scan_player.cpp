@@ -54,7 +54,13 @@ std::uint64_t ScanPlayer::play() {
     const dds_io::TimeMsg received = dds_io::wallClockNow();
     dds_io::toMessage(record.scan, sensor, sequence, msg);
     dds_io::stampStage(msg, "scan_ingest", received);
+    // Counted as published before it is written: write() may deliver it and
+    // then wait long for acknowledgements, and a kill there must not make the
+    // restarted ingest send it again (a duplicate downstream); a kill between
+    // the two loses it instead, like the rest of the unacknowledged window.
+    progress_.record(sequence + 1);
     if (!writer_.write(msg)) {
+      progress_.record(sequence);  // not out after all
       if (dds_io::ShutdownSignal::requested()) break;  // stopped while holding for a reader
       spdlog::error("scan {} not accepted by the pipeline within max_blocking_s (Fast DDS return code {}); stopping",
                     sequence, writer_.lastError());
@@ -62,7 +68,6 @@ std::uint64_t ScanPlayer::play() {
     }
     metrics_.scanPublished();
     ++sequence;
-    progress_.record(sequence);
   }
   return sequence - first_sequence;
 }
