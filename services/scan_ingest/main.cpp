@@ -32,6 +32,7 @@ struct IngestSettings {
   int wait_for_subscribers = 1;
   double wait_timeout_s = 30.0;
   bool exit_at_end = true;
+  std::string progress_path;
 };
 
 IngestSettings readIngestSettings(const ServiceConfigFile& config) {
@@ -67,6 +68,8 @@ IngestSettings readIngestSettings(const ServiceConfigFile& config) {
   playback.read("wait_for_subscribers", s.wait_for_subscribers);
   playback.read("wait_timeout_s", s.wait_timeout_s);
   playback.read("exit_at_end", s.exit_at_end);
+  playback.read("progress_path", s.progress_path);
+  if (!s.progress_path.empty()) s.progress_path = config.resolvePath(s.progress_path);
   playback.requireRange("wait_for_subscribers", s.wait_for_subscribers, 0, 1000, "an integer 0-1000");
   playback.rejectUnknownKeys();
   return s;
@@ -114,7 +117,8 @@ int runLive(ServiceRuntime& runtime, const IngestSettings& settings, ingest::Sca
 int runPlayback(ServiceRuntime& runtime, const IngestSettings& settings, ScanSource& source,
                 ingest::ScanPlayer::Writer& writer) {
   runtime.logStarted();
-  ingest::ScanPlayer player(source, writer, runtime.metrics(), settings.rate);
+  const ingest::PlaybackProgress progress(settings.progress_path);
+  ingest::ScanPlayer player(source, writer, runtime.metrics(), settings.rate, progress);
   const std::uint64_t published = player.play();
   writer.waitForAcknowledgments(runtime.settings().stream.max_blocking_s);
   spdlog::info("published {} scans", published);
@@ -136,6 +140,9 @@ int main(int argc, char** argv) {
     const StreamQos& stream = runtime.settings().stream;
     ingest::ScanPlayer::Writer writer(runtime.participant(), topic, losslessWriterQos(stream));
     writer.setFlowControl(flowControlWindow(stream), stream.max_blocking_s);
+    // Lossless: while the jump_filter is gone (crashed, restarting) the
+    // source holds instead of writing scans no reader will get.
+    writer.holdForReaders(settings.wait_for_subscribers, [] { return ShutdownSignal::requested(); });
     runtime.reportMatched("writer", topic, [&] { return writer.matchedReaders(); });
     spdlog::info("{} source; waiting for {} reader(s) of {}", settings.kind, settings.wait_for_subscribers, topic);
     if (!waitForSubscribers(writer, settings)) {

@@ -319,7 +319,11 @@ YAML
     fail "implausible map: $probe"
   kill -TERM "$MAP"; wait "$MAP" || fail "map_publisher exited non-zero"
   "$SF" map "$WORK/in.scanlog.jsonl" --config "$SRC/config/filter.yaml" -o "$WORK/offline_map" > /dev/null
-  cmp "$WORK/live_map.logodds" "$WORK/offline_map.logodds" || fail "live and offline maps differ"
+  # The live state file carries the map publisher's note (which scans it holds) after the cells.
+  cells=$(stat -c %s "$WORK/offline_map.logodds")
+  cmp -n "$cells" "$WORK/live_map.logodds" "$WORK/offline_map.logodds" || fail "live and offline maps differ"
+  note=$(tail -c +$((cells + 1)) "$WORK/live_map.logodds")
+  grep -q "^scans_integrated: " <<<"$note" || fail "no scan count after the live map's cells: '$note'"
   cmp "$WORK/live_map.pgm" "$WORK/offline_map.pgm" || fail "live and offline PGMs differ"
   ;;
 config)
