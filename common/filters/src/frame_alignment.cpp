@@ -1,5 +1,6 @@
 #include "scanfilter/frame_alignment.hpp"
 
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -34,11 +35,24 @@ void FrameAligner::snapshotObstacles(const PenetrationGrid& grid, std::span<cons
   width_ = top.x - lo_.x + 1;
   height_ = top.y - lo_.y + 1;
   cells_.assign(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), kNoObstacle);
+  words_per_row_ = (width_ + kBitsPerWord - 1) / kBitsPerWord + 1;  // +1: a run may read one word past the row
+  occupied_bits_.assign(static_cast<std::size_t>(words_per_row_) * static_cast<std::size_t>(height_), 0);
   centroids_.clear();
   grid.forEachObstacleIn(lo_, top, [&](CellIndex c) {
-    cells_[static_cast<std::size_t>((c.y - lo_.y) * width_ + (c.x - lo_.x))] = static_cast<std::int32_t>(centroids_.size());
+    const int x = c.x - lo_.x, y = c.y - lo_.y;
+    cells_[static_cast<std::size_t>(y * width_ + x)] = static_cast<std::int32_t>(centroids_.size());
+    occupied_bits_[static_cast<std::size_t>(y * words_per_row_ + x / kBitsPerWord)] |= std::uint64_t{1} << (x % kBitsPerWord);
     centroids_.push_back(grid.centroid(c));
   });
+}
+
+std::uint64_t FrameAligner::occupiedRun(int y, int x0, int count) const {
+  // Lowest bit first.
+  const std::uint64_t* row = occupied_bits_.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(words_per_row_);
+  const int word = x0 / kBitsPerWord, shift = x0 % kBitsPerWord;
+  std::uint64_t bits = row[word] >> shift;
+  if (shift != 0) bits |= row[word + 1] << (kBitsPerWord - shift);
+  return bits & ((std::uint64_t{1} << count) - 1);
 }
 
 const Eigen::Vector2d* FrameAligner::nearestObstacle(const Eigen::Vector2d& p) const {
@@ -47,15 +61,20 @@ const Eigen::Vector2d* FrameAligner::nearestObstacle(const Eigen::Vector2d& p) c
   const auto cy = static_cast<int>(std::floor(p.y() / cell_size_)) - lo_.y;
   const Eigen::Vector2d* best = nullptr;
   double best_sq = params_.max_match_distance * params_.max_match_distance;
+  const int x_lo = std::max(0, cx - reach), x_hi = std::min(width_ - 1, cx + reach);
+  if (x_lo > x_hi) return nullptr;
   for (int y = std::max(0, cy - reach); y <= std::min(height_ - 1, cy + reach); ++y) {
-    for (int x = std::max(0, cx - reach); x <= std::min(width_ - 1, cx + reach); ++x) {
-      const std::int32_t index = cells_[static_cast<std::size_t>(y * width_ + x)];
-      if (index == kNoObstacle) continue;
-      const Eigen::Vector2d& q = centroids_[static_cast<std::size_t>(index)];
-      const double d = (q - p).squaredNorm();
-      if (d <= best_sq) {
-        best_sq = d;
-        best = &q;
+    // The obstacle cells of this row in x order, as the cell-by-cell scan
+    // visited them (ties keep going to the last one seen).
+    for (int x0 = x_lo; x0 <= x_hi; x0 += kMaxRun) {
+      for (std::uint64_t bits = occupiedRun(y, x0, std::min(kMaxRun, x_hi - x0 + 1)); bits != 0; bits &= bits - 1) {
+        const int x = x0 + std::countr_zero(bits);
+        const Eigen::Vector2d& q = centroids_[static_cast<std::size_t>(cells_[static_cast<std::size_t>(y * width_ + x)])];
+        const double d = (q - p).squaredNorm();
+        if (d <= best_sq) {
+          best_sq = d;
+          best = &q;
+        }
       }
     }
   }
@@ -123,7 +142,9 @@ double FrameAligner::rms(const Eigen::Isometry2d& correction) const {
 Eigen::Isometry2d FrameAligner::fit(const Eigen::Vector2d& origin) {
   Eigen::Isometry2d correction = Eigen::Isometry2d::Identity();
   for (int iteration = 0; iteration < params_.max_iterations; ++iteration) {
-    if (matchPoints(correction) < params_.min_matches) break;
+    // The first iteration's matches (no correction) are align's own.
+    const int matched = iteration == 0 ? static_cast<int>(matches_.size()) : matchPoints(correction);
+    if (matched < params_.min_matches) break;
     const Eigen::Isometry2d next = step(correction, origin);
     const Eigen::Isometry2d delta = next * correction.inverse();
     correction = next;
@@ -145,11 +166,13 @@ FrameAlignment FrameAligner::align(const PenetrationGrid& grid, std::span<const 
   const int matched_as_is = matchPoints(identity);
   const double rms_as_is = rms(identity);
   Eigen::Isometry2d correction = fit(origin);
-  out.matches = matchPoints(correction);
-  out.rms = rms(correction);
+  // fit leaves the matches of no correction only when it took no step.
+  const bool moved = correction.matrix() != identity.matrix();
+  out.matches = moved ? matchPoints(correction) : matched_as_is;
+  out.rms = moved ? rms(correction) : rms_as_is;
   const bool gained = out.matches >= matched_as_is && out.rms <= rms_as_is - params_.min_rms_gain;
   if (!gained) {  // the frame fits as well where odometry put it: keep that
-    out.matches = matchPoints(identity);
+    out.matches = matched_as_is;
     out.rms = rms_as_is;
     correction = identity;
   }
