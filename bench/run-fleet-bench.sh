@@ -182,7 +182,17 @@ for ((r = 1; r <= ROBOTS; r++)); do
   "$BUILD/services/scan_ingest" --config "$WORK/$ns.scan_ingest.yaml" > "$WORK/$ns.scan_ingest.log" 2>&1 &
   PID_OF[$ns.scan_ingest]=$!; PIDS+=($!)
 done
-START=$SECONDS
+# The run starts once every ingest has published its first scan (each
+# waits for its jump_filter to match first).
+deadline=$((SECONDS + 60))
+for ((r = 1; r <= ROBOTS; r++)); do
+  until [ "$(metric "$(port "$r" 1)" 'scanfilter_scans_published_total\{service="scan_ingest"\}')" != "" ] &&
+        [ "$(metric "$(port "$r" 1)" 'scanfilter_scans_published_total\{service="scan_ingest"\}')" != 0 ]; do
+    [ "$SECONDS" -lt "$deadline" ] || fail "robot$r's scan_ingest published nothing within 60 s"
+    sleep 0.1
+  done
+done
+START=$SECONDS START_NS=$(date +%s%N)
 echo "fleet: $ROBOTS robots x 4 services on domain $DOMAIN, $BEAMS beams at $RATE Hz for $SECONDS_RUN s (work dir $WORK)"
 
 # Sampling (soak): per process RSS and CPU, and the window's end-to-end p99.
@@ -220,7 +230,7 @@ while [ $((SECONDS - START)) -lt "$SECONDS_RUN" ]; do
   fi
   sleep 0.5
 done
-ELAPSED=$((SECONDS - START))
+ELAPSED=$(awk -v a="$START_NS" -v b="$(date +%s%N)" 'BEGIN {printf "%.2f", (b - a) / 1e9}')
 for ((r = 1; r <= ROBOTS; r++)); do
   CPU_INGEST[robot$r]=$(cpu_of_pid "${PID_OF[robot$r.scan_ingest]}")
   kill -TERM "${PID_OF[robot$r.scan_ingest]}"
@@ -277,7 +287,7 @@ done
 all_scans=0
 for ((r = 1; r <= ROBOTS; r++)); do all_scans=$((all_scans + PUBLISHED[robot$r])); done
 awk -v c="$total_cpu" -v t="$ELAPSED" -v n="$all_scans" 'BEGIN {
-  printf "all services: %.1f CPU s in %d s = %.2f cores; %.0f µs of CPU per scan through the four services\n", c, t, c / t, 1e6 * c / n }'
+  printf "all services: %.1f CPU s in %.1f s = %.2f cores; %.0f µs of CPU per scan through the four services\n", c, t, c / t, 1e6 * c / n }'
 echo
 echo "| robot | scans | end-to-end p50 | p99 | hop p99 (penetration_filter in) |"
 echo "|---|---|---|---|---|"

@@ -78,7 +78,8 @@ for svc in jump_filter:19572 penetration_filter:19573 map_publisher:19574; do
   # The map is published every 20 ms, so a stalled map reader sees many maps.
   printf 'service: {domain_id: %s, profiles_file: %s, metrics_address: 127.0.0.1:%s, log_level: warn}\n' \
     "$DOMAIN" "$PROFILES" "${svc##*:}" > "$WORK/$name.yaml"
-  [ "$name" = map_publisher ] && echo "publishing: {rate_hz: 50}" >> "$WORK/$name.yaml"
+  if [ "$name" = map_publisher ]; then echo "publishing: {rate_hz: 50}"; else echo "filter: {config: $SRC/config/filter.yaml}"; fi \
+    >> "$WORK/$name.yaml"
   "$BUILD/services/$name" --config "$WORK/$name.yaml" > "$WORK/$name.log" 2>&1 &
   PIDS+=($!)
   eval "PID_${name}=$!"

@@ -25,6 +25,7 @@ class ObstacleWindow {
   // than at every beam that passes the cell.
   template <typename Position>
   void build(const PenetrationGrid& grid, CellIndex lo, CellIndex hi, Position&& position) {
+    cell_size_ = grid.cellSize();
     resize(lo, hi);
     grid.forEachObstacleIn(lo, hi, [&](CellIndex c) { mark(c, position(c)); });
   }
