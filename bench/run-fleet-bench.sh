@@ -69,8 +69,8 @@ port() { echo $((20000 + 10 * $1 + $2)); }
 
 # The hall at BEAMS beams (angular step 360°/BEAMS) and RATE Hz, true poses
 # (so a long run's map stays the hall's size), its tour repeated: one lap at
-# 0.4 m/s takes about 2.5 min.
-LAP_S=120
+# 0.4 m/s takes about 1.5 min (LAP_S is a safe lower bound).
+LAP_S=60
 LAPS=$(( SECONDS_RUN / LAP_S + 2 ))
 waypoints=$(sed -n 's/^  waypoints: \[\(.*\)\]$/\1/p' "$ROOT/config/scenes/hall.yaml")
 [ -n "$waypoints" ] || fail "no waypoints line in config/scenes/hall.yaml"
