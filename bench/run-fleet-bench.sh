@@ -285,7 +285,7 @@ for ((r = 1; r <= ROBOTS; r++)); do
   done
 done
 all_scans=0
-for ((r = 1; r <= ROBOTS; r++)); do all_scans=$((all_scans + PUBLISHED[robot$r])); done
+for ((r = 1; r <= ROBOTS; r++)); do all_scans=$((all_scans + ${PUBLISHED[robot$r]})); done
 awk -v c="$total_cpu" -v t="$ELAPSED" -v n="$all_scans" 'BEGIN {
   printf "all services: %.1f CPU s in %.1f s = %.2f cores; %.0f µs of CPU per scan through the four services\n", c, t, c / t, 1e6 * c / n }'
 echo

@@ -125,7 +125,7 @@ run_pass() {  # pass number: every scan through all four services; records speed
 
 run_pass 1
 "$BUILD/tests/stalled_subscriber" "$DOMAIN" "$PROFILES" --keep-all > "$WORK/stalled.log" 2>&1 &
-STALLED=$!; PIDS+=($STALLED)
+STALLED=$!; PIDS+=("$STALLED")
 wait_matched 19573 writer rt/scan_filtered 1
 wait_matched 19574 writer rt/map 1
 deadline=$((SECONDS + 30))
