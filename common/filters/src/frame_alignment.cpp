@@ -1,5 +1,6 @@
 #include "scanfilter/frame_alignment.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -17,6 +18,9 @@ constexpr double kConvergedShift = 1e-4;
 constexpr double kConvergedTurn = 1e-5;
 // Relative to the matches' count: far below what one constraining normal adds.
 constexpr double kRidge = 1e-6;
+// Distances here carry rounding errors of ~1e-16 m; a repeated answer is
+// trusted only this far (m) inside the distance that makes it sure.
+constexpr double kDistanceRoundingSlack = 1e-9;
 
 Eigen::Vector2d perpendicular(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
 
@@ -55,15 +59,23 @@ std::uint64_t FrameAligner::occupiedRun(int y, int x0, int count) const {
   return bits & ((std::uint64_t{1} << count) - 1);
 }
 
-const Eigen::Vector2d* FrameAligner::nearestObstacle(const Eigen::Vector2d& p) const {
-  const auto reach = static_cast<int>(std::ceil(params_.max_match_distance / cell_size_));
-  const auto cx = static_cast<int>(std::floor(p.x() / cell_size_)) - lo_.x;
-  const auto cy = static_cast<int>(std::floor(p.y() / cell_size_)) - lo_.y;
+const Eigen::Vector2d* FrameAligner::nearestObstacle(const Eigen::Vector2d& p, double* unchanged_within) const {
+  const double max_distance = params_.max_match_distance;
+  const auto reach = static_cast<int>(std::ceil(max_distance / cell_size_));
+  const auto cell_x = static_cast<int>(std::floor(p.x() / cell_size_));
+  const auto cell_y = static_cast<int>(std::floor(p.y() / cell_size_));
+  const auto cx = cell_x - lo_.x;
+  const auto cy = cell_y - lo_.y;
   const Eigen::Vector2d* best = nullptr;
-  double best_sq = params_.max_match_distance * params_.max_match_distance;
+  double best_sq = max_distance * max_distance;
+  // The nearest centroid but the answer (or the nearest of all when there is
+  // none), squared; a centroid outside the cells searched is at least as far
+  // as their edge.
+  double runner_up_sq = std::numeric_limits<double>::infinity();
+  const double edge = std::min({p.x() - (cell_x - reach) * cell_size_, (cell_x + reach + 1) * cell_size_ - p.x(),
+                                p.y() - (cell_y - reach) * cell_size_, (cell_y + reach + 1) * cell_size_ - p.y()});
   const int x_lo = std::max(0, cx - reach), x_hi = std::min(width_ - 1, cx + reach);
-  if (x_lo > x_hi) return nullptr;
-  for (int y = std::max(0, cy - reach); y <= std::min(height_ - 1, cy + reach); ++y) {
+  for (int y = std::max(0, cy - reach); y <= std::min(height_ - 1, cy + reach) && x_lo <= x_hi; ++y) {
     // The obstacle cells of this row in x order, as the cell-by-cell scan
     // visited them (ties keep going to the last one seen).
     for (int x0 = x_lo; x0 <= x_hi; x0 += kMaxRun) {
@@ -72,12 +84,23 @@ const Eigen::Vector2d* FrameAligner::nearestObstacle(const Eigen::Vector2d& p) c
         const Eigen::Vector2d& q = centroids_[static_cast<std::size_t>(cells_[static_cast<std::size_t>(y * width_ + x)])];
         const double d = (q - p).squaredNorm();
         if (d <= best_sq) {
+          if (best != nullptr) runner_up_sq = std::min(runner_up_sq, best_sq);
           best_sq = d;
           best = &q;
+        } else {
+          runner_up_sq = std::min(runner_up_sq, d);
         }
       }
     }
   }
+  const double runner_up = std::min(std::sqrt(runner_up_sq), edge);
+  // The answer holds while no other centroid can come as near as it (both
+  // distances change by at most the move) and it stays within reach; "none"
+  // holds while every centroid stays out of reach. Strictly: a tie is never
+  // assumed away.
+  const double sure = best != nullptr ? std::min((runner_up - std::sqrt(best_sq)) / 2.0, max_distance - std::sqrt(best_sq))
+                                      : runner_up - max_distance;
+  *unchanged_within = sure - kDistanceRoundingSlack;
   return best;
 }
 
@@ -100,8 +123,13 @@ void FrameAligner::findNormals(std::span<const Eigen::Vector2d> points, const st
 int FrameAligner::matchPoints(const Eigen::Isometry2d& correction) {
   matches_.clear();
   for (std::size_t k = 0; k < with_normal_points_.size(); ++k) {
-    if (const Eigen::Vector2d* q = nearestObstacle(correction * with_normal_points_[k]))
-      matches_.push_back({with_normal_points_[k], normals_[k], *q});
+    const Eigen::Vector2d p = correction * with_normal_points_[k];
+    LastQuery& last = last_queries_[k];
+    if (!((p - last.at).norm() < last.unchanged_within)) {
+      last.nearest = nearestObstacle(p, &last.unchanged_within);
+      last.at = p;
+    }
+    if (last.nearest != nullptr) matches_.push_back({with_normal_points_[k], normals_[k], *last.nearest});
   }
   return static_cast<int>(matches_.size());
 }
@@ -161,6 +189,7 @@ FrameAlignment FrameAligner::align(const PenetrationGrid& grid, std::span<const 
   snapshotObstacles(grid, points);
   findNormals(points, usable);
   out.candidates = static_cast<int>(with_normal_points_.size());
+  last_queries_.assign(with_normal_points_.size(), {Eigen::Vector2d::Zero(), nullptr, -1.0});
   if (width_ == 0 || out.candidates == 0) return out;
   const Eigen::Isometry2d identity = Eigen::Isometry2d::Identity();
   const int matched_as_is = matchPoints(identity);

@@ -72,7 +72,10 @@ class FrameAligner {
     Eigen::Vector2d target;  // the matched cell's centroid, in the world
   };
   void snapshotObstacles(const PenetrationGrid& grid, std::span<const Eigen::Vector2d> points);
-  const Eigen::Vector2d* nearestObstacle(const Eigen::Vector2d& p) const;
+  // The nearest obstacle centroid within max_match_distance of p (ties: the
+  // last in row order), or none; `*unchanged_within` gets how far p may move
+  // with the answer sure to stay the same (0 when nothing is sure).
+  const Eigen::Vector2d* nearestObstacle(const Eigen::Vector2d& p, double* unchanged_within) const;
   void findNormals(std::span<const Eigen::Vector2d> points, const std::vector<bool>& usable);
   // Bits x0 .. x0 + count - 1 (count at most kMaxRun) of row y of occupied_bits_.
   std::uint64_t occupiedRun(int y, int x0, int count) const;
@@ -106,6 +109,15 @@ class FrameAligner {
   std::vector<Eigen::Vector2d> with_normal_points_;
   std::vector<Eigen::Vector2d> normals_;
   std::vector<Match> matches_;
+  // Per point with a normal, its last query: where, the answer, and how far
+  // from there the answer holds. The Gauss-Newton steps move the points by
+  // millimetres, so most matchings repeat the last answer without a search.
+  struct LastQuery {
+    Eigen::Vector2d at;
+    const Eigen::Vector2d* nearest;
+    double unchanged_within;  // negative: no query yet
+  };
+  std::vector<LastQuery> last_queries_;
 };
 
 }  // namespace scanfilter
