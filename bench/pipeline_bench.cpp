@@ -18,6 +18,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -57,6 +58,21 @@ pid_t spawn(const std::vector<std::string>& args) {
     std::exit(1);
   }
   return pid;
+}
+
+// User + system CPU seconds of a process so far (/proc/PID/stat; "self" for this one).
+double cpuSeconds(const std::string& pid) {
+  std::FILE* f = std::fopen(("/proc/" + pid + "/stat").c_str(), "r");
+  if (f == nullptr) return 0.0;
+  char buffer[1024] = {};
+  const std::size_t n = std::fread(buffer, 1, sizeof(buffer) - 1, f);
+  std::fclose(f);
+  // Fields 14 and 15 (utime, stime) follow the command name's closing parenthesis.
+  const char* p = std::strrchr(buffer, ')');
+  if (p == nullptr || n == 0) return 0.0;
+  unsigned long utime = 0, stime = 0;
+  if (std::sscanf(p + 2, "%*c %*d %*d %*d %*d %*d %*u %*u %*u %*u %*u %lu %lu", &utime, &stime) != 2) return 0.0;
+  return static_cast<double>(utime + stime) / static_cast<double>(sysconf(_SC_CLK_TCK));
 }
 
 double percentile(std::vector<double> v, double q) {
@@ -205,7 +221,12 @@ int main(int argc, char** argv) {
   std::this_thread::sleep_for(std::chrono::milliseconds(500));  // the filters' inner link matches too
 
   std::uint64_t sequence = 0;
-  // Throughput: as fast as the pipeline accepts.
+  // Throughput: as fast as the pipeline accepts, with each process's CPU over it.
+  const std::vector<std::pair<std::string, std::string>> processes = {
+      {"jump_filter", std::to_string(children[0])}, {"penetration_filter", std::to_string(children[1])},
+      {"this benchmark (source and subscriber)", "self"}};
+  std::vector<double> cpu_before;
+  for (const auto& p : processes) cpu_before.push_back(cpuSeconds(p.second));
   const auto t0 = std::chrono::steady_clock::now();
   publish(source, frames, sensor, throughput_n, 0.0, sequence);
   const bool all = waitFor(out.count, throughput_n, 60.0);
@@ -216,6 +237,16 @@ int main(int argc, char** argv) {
               frames[0].size(), seconds, static_cast<double>(out.count) / seconds, out.count.load(),
               all ? "zero loss" : "LOSS", in_order ? "in order" : "OUT OF ORDER");
   sequence += throughput_n;
+  std::printf("\n| process | CPU s | cores | CPU µs per scan |\n|---|---|---|---|\n");
+  double total_cpu = 0.0;
+  for (std::size_t k = 0; k < processes.size(); ++k) {
+    const double cpu = cpuSeconds(processes[k].second) - cpu_before[k];
+    total_cpu += cpu;
+    std::printf("| %s | %.2f | %.2f | %.0f |\n", processes[k].first.c_str(), cpu, cpu / seconds,
+                1e6 * cpu / static_cast<double>(throughput_n));
+  }
+  std::printf("| all | %.2f | %.2f | %.0f |\n", total_cpu, total_cpu / seconds,
+              1e6 * total_cpu / static_cast<double>(throughput_n));
 
   for (double rate : {10.0, 40.0}) {
     out.clear();
