@@ -35,6 +35,8 @@ int main(int argc, char** argv) {
   app.add_option("--namespace", ns, "topic namespace (rt/<ns>/...)");
   app.add_option("--topic", topic, "topic name under rt/<ns>/")->capture_default_str();
   app.add_option("--profiles-file", participant_settings.profiles_file, "Fast DDS XML profiles")->capture_default_str();
+  app.add_option("--enclave", participant_settings.security.enclave,
+                 "DDS Security enclave directory (deploy/security/make-keystore.sh; default: security off)");
   app.add_option("--count", count, "stop after this many scans (0: until SIGINT/SIGTERM)");
   app.add_option("--timeout", timeout_s, "stop after this many seconds (0: no limit)");
   app.add_option("--idle-exit", idle_exit_s, "stop once no scan arrived for this many seconds after the first (0: never)");

@@ -7,6 +7,8 @@
 #include <fastdds/dds/topic/Topic.hpp>
 #include <fastdds/dds/topic/TypeSupport.hpp>
 
+#include "scanfilter/dds/security_settings.hpp"
+
 namespace scanfilter::dds_io {
 
 // Where a service's participant lives and how it talks: the domain and a
@@ -16,6 +18,7 @@ struct ParticipantSettings {
   std::string profiles_file;
   std::string profile = "scanfilter_loopback";
   std::string name = "scanfilter";
+  SecuritySettings security;  // off unless service.security.enclave is set
 };
 
 // One DomainParticipant with one publisher and one subscriber, created from
