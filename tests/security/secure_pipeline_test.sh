@@ -139,10 +139,10 @@ inject() {  # label topic [enclave]: scan_injector for INTRUDE_S; sets INJECT_CO
   echo "injector $1 on $2: exit $INJECT_CODE: $INJECT_OUT"
 }
 
-stop_recorder() {  # pid label: SIGTERM, then what it says it recorded
+stop_recorder() {  # pid label: SIGTERM; sets RECORDED to what it says it recorded
   kill -TERM "$1"
   wait "$1" || fail "recorder $2 exited non-zero"
-  sed -n 's/^recorded \([0-9]*\) scans.*/\1/p' "$WORK/$2.log"
+  RECORDED=$(sed -n 's/^recorded \([0-9]*\) scans.*/\1/p' "$WORK/$2.log")
 }
 
 "$SF" simulate --scene hall --seed 4 --max-frames $FRAMES -o "$WORK/in.scanlog.jsonl" > /dev/null
@@ -180,18 +180,19 @@ intruders)
   start_recorder secured "$ENCLAVES/recorder" $FRAMES
   REC=$LAST_PID
   wait_matched 19473 writer rt/labeled_scan
+  # It matched the secured recorder alone: the two without a valid
+  # certificate have been up since before the injectors ran.
+  n=$(matched 19473 writer rt/labeled_scan)
+  [ "${n:-0}" = 1 ] || fail "penetration_filter's rt/labeled_scan writer matched ${n:-0} readers, expected 1 (the secured recorder)"
   run_ingest "$WORK/in.scanlog.jsonl"
   wait "$REC" || fail "the secured recorder did not get $FRAMES scans"
   n=$(received 19472 jump_filter)
   [ "$n" = $FRAMES ] || fail "jump_filter received $n scans from the secured ingest, expected $FRAMES"
-  # The writer of rt/labeled_scan matched the secured recorder alone.
-  n=$(matched 19473 writer rt/labeled_scan)
-  [ "${n:-0}" = 1 ] || fail "penetration_filter's rt/labeled_scan writer matched ${n:-0} readers, expected 1 (the secured recorder)"
   for who in plain rogue; do
     pid=$PLAIN
     [ "$who" = rogue ] && pid=$ROGUE_REC
-    got=$(stop_recorder "$pid" "$who")
-    [ "$got" = 0 ] || fail "the $who recorder without a valid certificate read $got labelled scans"
+    stop_recorder "$pid" "$who"
+    [ "$RECORDED" = 0 ] || fail "the $who recorder without a valid certificate read ${RECORDED:-?} labelled scans"
     [ ! -e "$WORK/$who.scanlog.jsonl" ] || fail "the $who recorder wrote a scan log"
   done
   # And the injector itself delivers when its certificate is valid: a
