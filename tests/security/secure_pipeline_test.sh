@@ -6,7 +6,7 @@
 # possible (unshare -n), else on their own domain id.
 #
 #   secure_pipeline_test.sh BUILD_DIR SOURCE_DIR CASE
-#   CASE: labels | intruders | permissions | discovery_server | config
+#   CASE: labels | live | intruders | permissions | discovery_server | config
 set -euo pipefail
 BUILD="$1" SRC="$2" CASE="$3"
 if [ -z "${SCANFILTER_IN_NETNS:-}" ] && [ "$(id -u)" = 0 ] && unshare -n true 2>/dev/null; then
@@ -159,6 +159,29 @@ labels)
   wait "$REC" || fail "the secured recorder did not get $FRAMES scans"
   "$SF" diff "$WORK/offline.scanlog.jsonl" "$WORK/secured.scanlog.jsonl" ||
     fail "secured labels differ from the offline replay"
+  ;;
+live)
+  # A robot driver with its own enclave (driver: publishes rt/scan and
+  # rt/odom only) feeds the secured live ingest; every scan comes out
+  # labelled as the offline replay of what the ingest published labels it.
+  start_filters
+  start_recorder secured "$ENCLAVES/recorder" $FRAMES
+  REC=$LAST_PID
+  wait_matched 19473 writer rt/labeled_scan
+  config scan_ingest 19471 "$ENCLAVES/scan_ingest" "source: {kind: live}" \
+    "live: {scan_topic: scan, odom_topic: odom, mount: [0.0, 0.0, 0.0], max_pose_gap_s: 0.2, reliable: true}"
+  "$BUILD/services/scan_ingest" --config "$WORK/scan_ingest.yaml" > "$WORK/ingest.log" 2>&1 &
+  INGEST=$!; PIDS+=($INGEST)
+  WATCH+=($INGEST)
+  wait_matched 19472 reader rt/posed_scan
+  timeout -k 5 "$RUN_TIMEOUT_S" "$BUILD/dds_tools/ros_scan_publisher" --domain "$DOMAIN" --profiles-file "$PROFILES" \
+    --enclave "$ENCLAVES/driver" --rate 50 --reliable "$WORK/in.scanlog.jsonl" > "$WORK/publisher.log" 2>&1 ||
+    fail "ros_scan_publisher with the driver enclave failed"
+  wait "$REC" || fail "the secured recorder did not get $FRAMES scans from the live ingest"
+  kill -TERM "$INGEST"; wait "$INGEST" || fail "scan_ingest exited non-zero"
+  "$SF" replay "$WORK/secured.scanlog.jsonl" --config "$SRC/config/filter.yaml" -o "$WORK/relabelled.scanlog.jsonl" -q
+  "$SF" diff "$WORK/relabelled.scanlog.jsonl" "$WORK/secured.scanlog.jsonl" ||
+    fail "secured live labels differ from the offline replay of the same scans"
   ;;
 intruders)
   # Participants without a valid certificate - none at all, or one from
