@@ -20,10 +20,13 @@
 #                    [--publish "TOPIC..."] [--subscribe "TOPIC..."] KEYSTORE
 #       one more enclave (e.g. a ROS 2 node's) with exactly these topics
 #
-# Topics are ROS names: "scan" is rt/<NS>/scan, "/scan" is rt/scan; DDS
+# Topics are ROS names: "scan" is rt/<NS>/scan, "/scan" is rt/scan; a name
+# given as dds:NAME is the DDS topic NAME as is (ROS 2's own, e.g.
+# dds:ros_discovery_info, dds:rq/my_node/*, dds:rr/my_node/*); DDS
 # wildcards (* ?) are allowed. Each service may publish only its outputs and
 # subscribe only to its inputs (docs/operations.md, DDS Security).
 set -euo pipefail
+set -o noglob  # topic lists hold DDS wildcards (* ?): never expand them against files
 
 DOMAIN=0
 NAMESPACE=""
@@ -36,7 +39,7 @@ SUBSCRIBE=""
 # clock lags the machine that made the keystore still accepts them.
 CLOCK_SKEW_DAYS=1
 
-usage() { sed -n '2,26s/^# \{0,1\}//p' "$0"; }
+usage() { sed -n '2,28s/^# \{0,1\}//p' "$0"; }
 die() { echo "make-keystore.sh: $*" >&2; exit 2; }
 
 while [ $# -gt 0 ]; do
@@ -120,6 +123,7 @@ XML
 
 dds_topic() {  # ROS name -> DDS topic name
   case "$1" in
+    dds:*) echo "${1#dds:}" ;;
     /*) echo "rt$1" ;;
     *) if [ -n "$NAMESPACE" ]; then echo "rt/$NAMESPACE/$1"; else echo "rt/$1"; fi ;;
   esac
