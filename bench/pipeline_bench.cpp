@@ -233,9 +233,17 @@ RunResult measure(const RunSetup& setup, const char* self, std::size_t throughpu
     Reader pong(participant, kPongTopic, losslessReaderQos(qos), [&](LabeledScanMsg& m) { pong_out.add(m); });
     // Authentication handshakes make a secured start slower: give matching time.
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(40);
-    while ((source.matchedReaders() < 1 || sink.matchedWriters() < 1 || ping.matchedReaders() < 1 || pong.matchedWriters() < 1) &&
-           std::chrono::steady_clock::now() < deadline)
+    const auto all_matched = [&] {
+      return source.matchedReaders() >= 1 && sink.matchedWriters() >= 1 && ping.matchedReaders() >= 1 &&
+             pong.matchedWriters() >= 1;
+    };
+    while (!all_matched() && std::chrono::steady_clock::now() < deadline)
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    if (!all_matched()) {
+      for (pid_t pid : children) kill(pid, SIGTERM);
+      for (pid_t pid : children) waitpid(pid, nullptr, 0);
+      throw std::runtime_error(setup.label + ": the filters and the echo did not match within 40 s (see their errors above)");
+    }
     std::this_thread::sleep_for(std::chrono::milliseconds(500));  // the filters' inner link matches too
 
     std::uint64_t sequence = 0;
