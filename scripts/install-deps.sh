@@ -14,6 +14,8 @@ PACKAGES=(
   # DDS services (issue 3 and later)
   libfastrtps-dev libfastcdr-dev fastddsgen fastdds-tools prometheus-cpp-dev
   cyclonedds-dev cyclonedds-tools prometheus iproute2 util-linux curl
+  # DDS Security keystores (deploy/security/make-keystore.sh, tests/security/)
+  openssl
 )
 
 missing=()
