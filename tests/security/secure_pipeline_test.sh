@@ -141,7 +141,7 @@ inject() {  # label topic [enclave]: scan_injector for INTRUDE_S; sets INJECT_CO
 }
 
 stop_recorder() {  # pid label: SIGTERM; sets RECORDED to what it says it recorded
-  kill -TERM "$1"
+  kill -TERM "$1" 2>/dev/null || true  # it may have reached its own --timeout
   wait "$1" || fail "recorder $2 exited non-zero"
   RECORDED=$(sed -n 's/^recorded \([0-9]*\) scans.*/\1/p' "$WORK/$2.log")
 }
