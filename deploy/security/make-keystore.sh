@@ -86,7 +86,13 @@ sign() {  # in out: S/MIME, clear text with a detached signature, by the permiss
 iso_date() { date -u -d "$1" +%Y-%m-%dT%H:%M:%S; }
 
 make_governance() {
-  [ -f "$ENC/governance.p7s" ] && return 0
+  if [ -f "$ENC/governance.p7s" ]; then
+    local rules
+    rules=$(cat "$ENC/governance.xml")
+    grep -q "<id>$DOMAIN</id>" <<<"$rules" ||
+      die "$ENC/governance.xml covers another domain than --domain $DOMAIN: use a new keystore per domain"
+    return 0
+  fi
   cat > "$ENC/governance.xml" <<XML
 <?xml version="1.0" encoding="UTF-8"?>
 <!-- scanfilter's domain rules (deploy/security/make-keystore.sh): only
@@ -177,6 +183,7 @@ chmod 700 "$PRIV"
 if [ -n "$ADD_ENCLAVE" ]; then
   [[ "$ADD_ENCLAVE" == /* ]] || die "--add-enclave: expected an absolute enclave path like /robot/driver, got \"$ADD_ENCLAVE\""
   [ -f "$ENC/governance.p7s" ] || die "$KS is not a keystore yet: run make-keystore.sh $KS first"
+  make_governance  # only checks that it covers --domain
   make_enclave "$ADD_ENCLAVE" "$PUBLISH" "$SUBSCRIBE"
   exit 0
 fi
