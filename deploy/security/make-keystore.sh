@@ -35,8 +35,10 @@ DAYS=3650
 ADD_ENCLAVE=""
 PUBLISH=""
 SUBSCRIBE=""
-# Certificates and permissions start to be valid a day early: a robot whose
-# clock lags the machine that made the keystore still accepts them.
+# Permissions start to be valid a day early, so that a robot whose clock lags
+# the machine that made the keystore by less than that accepts them.
+# (Certificates start when made: openssl 3.0's x509 cannot backdate them, so
+# make the keystore on a machine whose clock is not ahead of the robots'.)
 CLOCK_SKEW_DAYS=1
 
 usage() { sed -n '2,28s/^# \{0,1\}//p' "$0"; }
