@@ -73,20 +73,38 @@ class MapService {
     runtime.reportMatched("reader", runtime.topic(kLabeledScanTopic), [this] { return reader_.matchedWriters(); });
     runtime.reportMatched("writer", runtime.topic("map"), [this] { return map_writer_.matchedReaders(); });
     runtime.reportMatched("writer", runtime.topic("map_updates"), [this] { return update_writer_.matchedReaders(); });
+    if (!settings_.save_path.empty()) metrics_.savedMapCurrent();  // the map starts empty or as loaded: nothing unsaved
   }
 
   // Once per publishing period.
   void tick() {
     publishIfChanged();
     metrics_.lastPublishAge(std::chrono::duration<double>(std::chrono::steady_clock::now() - last_publish_).count());
-    if (std::chrono::steady_clock::now() - last_save_ > std::chrono::duration<double>(settings_.save_period_s)) save();
+    if (std::chrono::steady_clock::now() - last_save_ > std::chrono::duration<double>(settings_.save_period_s)) periodicSave();
+  }
+
+  // A periodic save that fails (disk full, folder gone) must not end the
+  // service and the map in memory with it: it says why and tries again next
+  // period, while scanfilter_map_last_save_timestamp_seconds stands still
+  // (alert ScanfilterMapNotSaved). The save at shutdown still fails loudly.
+  void periodicSave() {
+    try {
+      save();
+    } catch (const std::exception& e) {
+      spdlog::error("saving the map to {}.* failed: {}; the map stays in memory, next try in {} s",
+                    settings_.save_path, e.what(), settings_.save_period_s);
+    }
   }
 
   void save() {
     last_save_ = std::chrono::steady_clock::now();
     if (settings_.save_path.empty()) return;
     std::lock_guard lock(mutex_);
-    if (!grid_.bounds().empty()) saveMap(grid_, settings_.save_path);
+    if (!grid_.bounds().empty()) {
+      saveMap(grid_, settings_.save_path);
+      metrics_.mapSaved();
+    }
+    metrics_.savedMapCurrent();
   }
 
  private:

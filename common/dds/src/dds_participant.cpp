@@ -18,6 +18,7 @@ DdsParticipant::DdsParticipant(const ParticipantSettings& settings) {
   DomainParticipantQos qos;
   if (factory->get_participant_qos_from_profile(settings.profile, qos) != ReturnCode_t::RETCODE_OK)
     throw std::runtime_error(settings.profiles_file + ": no participant profile '" + settings.profile + "'");
+  applyDiscovery(settings.discovery, qos);
   qos.name(settings.name);
   applySecurity(settings.security, qos);  // last: it checks the discovery setup it must not be combined with
   participant_ = factory->create_participant(static_cast<DomainId_t>(settings.domain_id), qos);

@@ -7,6 +7,7 @@
 #include <fastdds/dds/topic/Topic.hpp>
 #include <fastdds/dds/topic/TypeSupport.hpp>
 
+#include "scanfilter/dds/discovery_settings.hpp"
 #include "scanfilter/dds/security_settings.hpp"
 
 namespace scanfilter::dds_io {
@@ -18,7 +19,8 @@ struct ParticipantSettings {
   std::string profiles_file;
   std::string profile = "scanfilter_loopback";
   std::string name = "scanfilter";
-  SecuritySettings security;  // off unless service.security.enclave is set
+  DiscoverySettings discovery;  // service.discovery: other hosts (replaces the profile's transports)
+  SecuritySettings security;    // off unless service.security.enclave is set
 };
 
 // One DomainParticipant with one publisher and one subscriber, created from
