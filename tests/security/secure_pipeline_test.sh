@@ -263,19 +263,22 @@ permissions)
 discovery_server)
   # Fast DDS 2.9 cannot secure a Discovery Server: a service with both
   # configured stops at once with a message that says so, whichever way the
-  # server was configured (ROS_DISCOVERY_SERVER, or the XML profile).
+  # server was configured (ROS_DISCOVERY_SERVER, the XML profile, or
+  # service.discovery.servers).
   config jump_filter 19472 "$ENCLAVES/jump_filter" "$FILTER_SECTION"
   sed "s#<builtin>#<builtin>\n          <discovery_config>\n            <discoveryProtocol>CLIENT</discoveryProtocol>\n            <discoveryServersList>\n              <RemoteServer prefix=\"44.53.00.5f.45.50.52.4f.53.49.4d.41\">\n                <metatrafficUnicastLocatorList><locator><udpv4><address>127.0.0.1</address><port>11811</port></udpv4></locator></metatrafficUnicastLocatorList>\n              </RemoteServer>\n            </discoveryServersList>\n          </discovery_config>#" \
     "$PROFILES" > "$WORK/client-profiles.xml"
   grep -q "<discoveryProtocol>CLIENT" "$WORK/client-profiles.xml" || fail "could not write the client profile"
   sed "s#profiles_file: .*#profiles_file: $WORK/client-profiles.xml#" "$WORK/jump_filter.yaml" > "$WORK/jump_client.yaml"
-  for how in env profile; do
+  sed 's#^  security:#  discovery: {servers: ["127.0.0.1:11811"]}\n  security:#' "$WORK/jump_filter.yaml" > "$WORK/jump_keys.yaml"
+  grep -q "servers:" "$WORK/jump_keys.yaml" || fail "could not write the service.discovery.servers config"
+  for how in env profile keys; do
     set +e
-    if [ "$how" = env ]; then
-      out=$(ROS_DISCOVERY_SERVER=127.0.0.1:11811 timeout -k 5 60 "$BUILD/services/jump_filter" --config "$WORK/jump_filter.yaml" 2>&1)
-    else
-      out=$(timeout -k 5 60 "$BUILD/services/jump_filter" --config "$WORK/jump_client.yaml" 2>&1)
-    fi
+    case "$how" in
+      env) out=$(ROS_DISCOVERY_SERVER=127.0.0.1:11811 timeout -k 5 60 "$BUILD/services/jump_filter" --config "$WORK/jump_filter.yaml" 2>&1) ;;
+      profile) out=$(timeout -k 5 60 "$BUILD/services/jump_filter" --config "$WORK/jump_client.yaml" 2>&1) ;;
+      keys) out=$(timeout -k 5 60 "$BUILD/services/jump_filter" --config "$WORK/jump_keys.yaml" 2>&1) ;;
+    esac
     code=$?
     set -e
     echo "security + discovery server ($how): exit $code: $out"
@@ -294,7 +297,7 @@ discovery_server)
     fi
     pid=$!; PIDS+=($pid)
     deadline=$((SECONDS + MATCH_TIMEOUT_S))
-    until grep -q "started:" "$WORK/ds_$how.log"; do
+    until grep -qs "started:" "$WORK/ds_$how.log"; do
       kill -0 "$pid" 2>/dev/null || fail "jump_filter with a Discovery Server ($how) and no security did not start"
       [ "$SECONDS" -lt "$deadline" ] || fail "jump_filter with a Discovery Server ($how) did not start within $MATCH_TIMEOUT_S s"
       sleep 0.1
@@ -305,7 +308,7 @@ discovery_server)
   "$BUILD/services/jump_filter" --config "$WORK/jump_filter.yaml" > "$WORK/secured.log" 2>&1 &
   pid=$!; PIDS+=($pid)
   deadline=$((SECONDS + MATCH_TIMEOUT_S))
-  until grep -q "started:" "$WORK/secured.log"; do
+  until grep -qs "started:" "$WORK/secured.log"; do
     kill -0 "$pid" 2>/dev/null || fail "the secured jump_filter did not start"
     [ "$SECONDS" -lt "$deadline" ] || fail "the secured jump_filter did not start within $MATCH_TIMEOUT_S s"
     sleep 0.1
