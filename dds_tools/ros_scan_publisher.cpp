@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "scanfilter/dds/dds_participant.hpp"
+#include "scanfilter/dds/default_paths.hpp"
 #include "scanfilter/dds/scan_message.hpp"
 #include "scanfilter/dds/shutdown_signal.hpp"
 #include "scanfilter/dds/stream_qos.hpp"
@@ -50,7 +51,7 @@ void toLaserScan(const Scan& scan, const SensorInfo& sensor, bool upside_down, c
 int main(int argc, char** argv) {
   CLI::App app{"ros_scan_publisher: publish a scan log as LaserScan (rt/<ns>/scan) and Odometry (rt/<ns>/odom)"};
   ParticipantSettings settings;
-  settings.profiles_file = SCANFILTER_DEPLOY_DIR "/fastdds-loopback.xml";
+  settings.profiles_file = defaultProfilesFile();
   settings.name = "scanfilter_ros_scan_publisher";
   std::string input, ns, frame = "laser";
   double rate_hz = 0.0;

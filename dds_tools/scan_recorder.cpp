@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "scanfilter/dds/dds_participant.hpp"
+#include "scanfilter/dds/default_paths.hpp"
 #include "scanfilter/dds/scan_message.hpp"
 #include "scanfilter/dds/service_config.hpp"
 #include "scanfilter/dds/shutdown_signal.hpp"
@@ -24,7 +25,7 @@ using namespace scanfilter::dds_io;
 int main(int argc, char** argv) {
   CLI::App app{"scan_recorder: record rt/<ns>/labeled_scan (or another LabeledScan topic) to a scan log"};
   ParticipantSettings participant_settings;
-  participant_settings.profiles_file = SCANFILTER_DEPLOY_DIR "/fastdds-loopback.xml";
+  participant_settings.profiles_file = defaultProfilesFile();
   participant_settings.name = "scanfilter_scan_recorder";
   std::string ns, topic = kLabeledScanTopic, output, config;
   std::uint64_t count = 0;

@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 
+#include "scanfilter/dds/default_paths.hpp"
 #include "scanfilter/input_error.hpp"
 
 namespace scanfilter::dds_io {
@@ -34,7 +35,7 @@ ServiceCli::ServiceCli(std::string name, std::string description, std::string de
 std::optional<int> ServiceCli::parse(int argc, char** argv) {
   CLI::App app{description_, name_};
   app.set_version_flag("--version", name_ + " (scanfilter " + scanfilterVersion() + ")");
-  std::string config_path = std::string(SCANFILTER_CONFIG_DIR) + "/" + name_ + ".yaml";
+  std::string config_path = defaultConfigDir() + "/" + name_ + ".yaml";
   std::string log_level;
   std::optional<int> domain;
   std::optional<std::string> ns, metrics;

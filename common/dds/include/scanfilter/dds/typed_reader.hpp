@@ -10,6 +10,7 @@
 #include <fastdds/dds/subscriber/SampleInfo.hpp>
 
 #include "scanfilter/dds/dds_participant.hpp"
+#include "scanfilter/dds/progress_heartbeat.hpp"
 
 namespace scanfilter::dds_io {
 
@@ -31,7 +32,7 @@ class TypedReader : private eprosima::fastdds::dds::DataReaderListener {
 
   TypedReader(DdsParticipant& participant, const std::string& topic_name,
               const eprosima::fastdds::dds::DataReaderQos& qos, Callback callback)
-      : participant_(participant), callback_(std::move(callback)) {
+      : participant_(participant), callback_(std::move(callback)), heartbeat_("the reader of " + topic_name) {
     auto* topic = participant.topic(topic_name, eprosima::fastdds::dds::TypeSupport(new PubSubType()));
     reader_ = participant.subscriber()->create_datareader(topic, qos, this,
                                                           eprosima::fastdds::dds::StatusMask::subscription_matched());
@@ -55,9 +56,11 @@ class TypedReader : private eprosima::fastdds::dds::DataReaderListener {
   void takeLoop() {
     eprosima::fastdds::dds::SampleInfo info;
     while (!stop_) {
+      heartbeat_.beat();  // the systemd watchdog pings only while this is recent
       if (!reader_->wait_for_unread_message({0, kPollNanoseconds})) continue;
       while (!stop_ && reader_->take_next_sample(&sample_, &info) == eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK) {
         if (info.valid_data) callback_(sample_);
+        heartbeat_.beat();
       }
     }
   }
@@ -72,6 +75,7 @@ class TypedReader : private eprosima::fastdds::dds::DataReaderListener {
   Sample sample_;  // reused: no allocation per scan once sizes settle
   std::atomic<int> matched_{0};
   std::atomic<bool> stop_{false};
+  ProgressHeartbeat heartbeat_;
   std::thread worker_;
 };
 
