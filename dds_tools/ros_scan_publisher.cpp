@@ -62,6 +62,8 @@ int main(int argc, char** argv) {
   app.add_option("--domain", settings.domain_id, "DDS domain id")->capture_default_str();
   app.add_option("--namespace", ns, "topic namespace (rt/<ns>/scan)");
   app.add_option("--profiles-file", settings.profiles_file, "Fast DDS XML profiles")->capture_default_str();
+  app.add_option("--enclave", settings.security.enclave,
+                 "DDS Security enclave directory (deploy/security/make-keystore.sh; default: security off)");
   app.add_option("--frame-id", frame, "LaserScan frame_id")->capture_default_str();
   app.add_option("--rate", rate_hz, "scans per second (0: the recorded pace)");
   app.add_option("--wait-readers", wait_readers, "wait for this many scan readers before publishing")->capture_default_str();

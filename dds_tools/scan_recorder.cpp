@@ -37,6 +37,10 @@ int main(int argc, char** argv) {
   app.add_option("--namespace", ns, "topic namespace (rt/<ns>/...)");
   app.add_option("--topic", topic, "topic name under rt/<ns>/")->capture_default_str();
   app.add_option("--profiles-file", participant_settings.profiles_file, "Fast DDS XML profiles")->capture_default_str();
+  std::string enclave;
+  app.add_option("--enclave", enclave,
+                 "DDS Security enclave directory (deploy/security/make-keystore.sh; default: security off, or "
+                 "--config's service.security)");
   app.add_option("--count", count, "stop after this many scans (0: until SIGINT/SIGTERM)");
   app.add_option("--timeout", timeout_s, "stop after this many seconds (0: no limit)");
   app.add_option("--idle-exit", idle_exit_s, "stop once no scan arrived for this many seconds after the first (0: never)");
@@ -54,6 +58,7 @@ int main(int argc, char** argv) {
       participant_settings = loadServiceConfig(config, "127.0.0.1:0", {}).service.participant;
       participant_settings.name = name;
     }
+    if (!enclave.empty()) participant_settings.security.enclave = enclave;
     DdsParticipant participant(participant_settings);
     std::mutex mutex;
     std::optional<ScanLogWriter> writer;

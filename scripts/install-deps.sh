@@ -18,6 +18,8 @@ PACKAGES=(
   # dpkg-shlibdeps for cpack's dependency list, the notify test, the
   # system-call filter test
   libsystemd-dev systemd dpkg-dev adduser python3 strace
+  # DDS Security keystores (deploy/security/make-keystore.sh, tests/security/)
+  openssl
 )
 
 missing=()

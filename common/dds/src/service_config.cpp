@@ -53,6 +53,7 @@ ServiceConfigFile loadServiceConfig(const std::string& path, const std::string& 
     section.fail("metrics_address", "expected host:port, got \"" + s.metrics_address + "\"");
   if (!std::filesystem::exists(s.participant.profiles_file))
     section.fail("profiles_file", "no such file: " + s.participant.profiles_file);
+  s.participant.security = readSecuritySettings(section, file.directory);
   section.rejectUnknownKeys();
   return file;
 }

@@ -8,6 +8,7 @@
 #include <fastdds/dds/topic/TypeSupport.hpp>
 
 #include "scanfilter/dds/discovery_settings.hpp"
+#include "scanfilter/dds/security_settings.hpp"
 
 namespace scanfilter::dds_io {
 
@@ -19,6 +20,7 @@ struct ParticipantSettings {
   std::string profile = "scanfilter_loopback";
   std::string name = "scanfilter";
   DiscoverySettings discovery;  // service.discovery: other hosts (replaces the profile's transports)
+  SecuritySettings security;    // off unless service.security.enclave is set
 };
 
 // One DomainParticipant with one publisher and one subscriber, created from
