@@ -87,7 +87,10 @@ int main(int argc, char** argv) {
     else ns = argv[k];
   }
   ShutdownSignal::install();
-  ParticipantSettings settings{std::atoi(argv[1]), argv[2], "scanfilter_loopback", "stalled_subscriber"};
+  ParticipantSettings settings;
+  settings.domain_id = std::atoi(argv[1]);
+  settings.profiles_file = argv[2];
+  settings.name = "stalled_subscriber";
   DdsParticipant participant(settings);
   StalledReader<sensor_msgs::msg::dds_::LaserScan_PubSubType> scans(participant, rosTopic(ns, "scan_filtered"),
                                                                    stubbornQos(keep_all, false));
