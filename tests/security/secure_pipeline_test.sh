@@ -266,7 +266,10 @@ discovery_server)
   # server was configured (ROS_DISCOVERY_SERVER, the XML profile, or
   # service.discovery.servers).
   config jump_filter 19472 "$ENCLAVES/jump_filter" "$FILTER_SECTION"
-  sed "s#<builtin>#<builtin>\n          <discovery_config>\n            <discoveryProtocol>CLIENT</discoveryProtocol>\n            <discoveryServersList>\n              <RemoteServer prefix=\"44.53.00.5f.45.50.52.4f.53.49.4d.41\">\n                <metatrafficUnicastLocatorList><locator><udpv4><address>127.0.0.1</address><port>11811</port></udpv4></locator></metatrafficUnicastLocatorList>\n              </RemoteServer>\n            </discoveryServersList>\n          </discovery_config>#" \
+  # Into the profile's own discovery_config (it sets the participant lease):
+  # a second discovery_config element would not parse.
+  grep -q "<discovery_config>" "$PROFILES" || fail "$PROFILES has no discovery_config to extend"
+  sed "s#<discovery_config>#<discovery_config>\n            <discoveryProtocol>CLIENT</discoveryProtocol>\n            <discoveryServersList>\n              <RemoteServer prefix=\"44.53.00.5f.45.50.52.4f.53.49.4d.41\">\n                <metatrafficUnicastLocatorList><locator><udpv4><address>127.0.0.1</address><port>11811</port></udpv4></locator></metatrafficUnicastLocatorList>\n              </RemoteServer>\n            </discoveryServersList>#" \
     "$PROFILES" > "$WORK/client-profiles.xml"
   grep -q "<discoveryProtocol>CLIENT" "$WORK/client-profiles.xml" || fail "could not write the client profile"
   sed "s#profiles_file: .*#profiles_file: $WORK/client-profiles.xml#" "$WORK/jump_filter.yaml" > "$WORK/jump_client.yaml"
