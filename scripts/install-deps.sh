@@ -14,6 +14,8 @@ PACKAGES=(
   # DDS services (issue 3 and later)
   libfastrtps-dev libfastcdr-dev fastddsgen fastdds-tools prometheus-cpp-dev
   cyclonedds-dev cyclonedds-tools prometheus iproute2 util-linux curl
+  # fuzzing (scripts/fuzz.sh: libFuzzer, ASan, UBSan)
+  clang libclang-rt-14-dev
 )
 
 missing=()

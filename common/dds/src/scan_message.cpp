@@ -91,6 +91,29 @@ std::optional<std::string> rejectionReason(const LabeledScanMsg& msg) {
   return std::nullopt;
 }
 
+std::optional<std::string> laserScanRejectionReason(const LaserScanMsg& msg) {
+  const std::size_t n = msg.ranges().size();
+  if (n == 0) return "empty";
+  if (n > kMaxBeamsOnWire) return "too_many_beams";
+  if (!msg.intensities().empty() && msg.intensities().size() != n) return "length_mismatch";
+  if (!(msg.angle_increment() != 0.0f) || !std::isfinite(msg.angle_increment()) || !std::isfinite(msg.angle_min()))
+    return "zero_increment";
+  // The filter's d_min/d_max come from these: they must name a range.
+  if (!std::isfinite(msg.range_min()) || !std::isfinite(msg.range_max()) || !(msg.range_max() > msg.range_min()))
+    return "bad_sensor";
+  if (!isValidTime(msg.header().stamp())) return "bad_stamp";
+  return std::nullopt;
+}
+
+std::optional<std::string> odometryRejectionReason(const OdometryMsg& msg) {
+  const auto& p = msg.pose().pose();
+  const auto& q = p.orientation();
+  if (!std::isfinite(p.position().x()) || !std::isfinite(p.position().y()) || !std::isfinite(yawOf(q)))
+    return "nan_pose";
+  if (!isValidTime(msg.header().stamp())) return "bad_stamp";
+  return std::nullopt;
+}
+
 void fromMessage(const LabeledScanMsg& msg, Scan& scan, SensorInfo& sensor) {
   sensor.mount = {msg.mount_x(), msg.mount_y(), msg.mount_yaw()};
   sensor.direction = msg.clockwise() ? BeamDirection::kCw : BeamDirection::kCcw;

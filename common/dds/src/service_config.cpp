@@ -24,7 +24,7 @@ ServiceConfigFile loadServiceConfig(const std::string& path, const std::string& 
   file.root = loadYamlFile(path);
   if (!file.root.IsMap()) throw InputError(path, 1, "", "expected a mapping at the top level");
   for (const auto& entry : file.root) {
-    const auto key = entry.first.as<std::string>();
+    const auto key = keyText(entry.first, path);
     if (key != "service" && !own_sections.count(key))
       throw InputError(path, static_cast<std::size_t>(entry.first.Mark().line) + 1, key, "unknown section");
   }

@@ -24,6 +24,12 @@ constexpr std::size_t kFlaserTrailingFields = 9;
 constexpr std::size_t kRobotLaserTrailingFields = 13;
 constexpr std::size_t kRobotLaserHeadFields = 9;  // name .. num_readings
 
+// A count read from a line: a whole number from 0 up to the fields the line
+// has (a larger one cannot be right, and converting it could overflow).
+bool isCountWithin(double value, std::size_t fields) {
+  return value >= 0.0 && value == std::floor(value) && value <= static_cast<double>(fields);
+}
+
 bool isScanLine(const std::string& line) {
   return line.rfind("FLASER ", 0) == 0 || line.rfind("ROBOTLASER1 ", 0) == 0;
 }
@@ -102,7 +108,8 @@ void CarmenLogReader::setRanges(const std::vector<std::string>& tokens, std::siz
 
 void CarmenLogReader::parseFlaser(const std::vector<std::string>& tokens, Scan& scan) const {
   const double n_value = number(tokens, 1, "num_readings");
-  if (n_value < 1.0 || n_value != std::floor(n_value)) fail("num_readings", "expected a positive integer");
+  if (n_value < 1.0 || !isCountWithin(n_value, tokens.size()))
+    fail("num_readings", "expected a positive integer up to the line's field count, got \"" + tokens[1] + "\"");
   const auto n = static_cast<std::size_t>(n_value);
   if (tokens.size() != 2 + n + kFlaserTrailingFields)
     fail("FLASER", "has " + std::to_string(tokens.size()) + " fields; " + std::to_string(n) +
@@ -121,7 +128,8 @@ void CarmenLogReader::parseRobotLaser(const std::vector<std::string>& tokens, Sc
   const double resolution = number(tokens, 4, "angular_resolution");
   if (resolution == 0.0) fail("angular_resolution", "is 0; expected a non-zero step");
   const double n_value = number(tokens, 8, "num_readings");
-  if (n_value < 1.0 || n_value != std::floor(n_value)) fail("num_readings", "expected a positive integer");
+  if (n_value < 1.0 || !isCountWithin(n_value, tokens.size()))
+    fail("num_readings", "expected a positive integer up to the line's field count, got \"" + tokens[8] + "\"");
   const auto n = static_cast<std::size_t>(n_value);
   std::size_t after = kRobotLaserHeadFields + n;
   if (tokens.size() < after + kRobotLaserTrailingFields)
@@ -130,7 +138,10 @@ void CarmenLogReader::parseRobotLaser(const std::vector<std::string>& tokens, Sc
   setRanges(tokens, kRobotLaserHeadFields, n, scan);
   // Some CARMEN versions insert num_remissions [remissions] after the ranges.
   if (tokens.size() > after + kRobotLaserTrailingFields) {
-    const auto remissions = static_cast<std::size_t>(number(tokens, after, "num_remissions"));
+    const double remissions_value = number(tokens, after, "num_remissions");
+    if (!isCountWithin(remissions_value, tokens.size()))
+      fail("num_remissions", "expected an integer >= 0 up to the line's field count, got \"" + tokens[after] + "\"");
+    const auto remissions = static_cast<std::size_t>(remissions_value);
     after += 1 + remissions;
     if (tokens.size() != after + kRobotLaserTrailingFields)
       fail("ROBOTLASER1", "field count does not match num_readings and num_remissions");

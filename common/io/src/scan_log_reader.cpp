@@ -107,7 +107,9 @@ std::vector<std::uint8_t> parseCodes(const Json& array, const char* key, std::si
   std::vector<std::uint8_t> codes(expected);
   for (std::size_t i = 0; i < expected; ++i) {
     const Json& v = array[i];
-    if (!v.is_number_integer() || !isValidPointCode(v.get<int>()))
+    // As int64: a huge code read as int would wrap to a valid one.
+    if (!v.is_number_integer() || v.get<std::int64_t>() < 0 || v.get<std::int64_t>() > 255 ||
+        !isValidPointCode(static_cast<int>(v.get<std::int64_t>())))
       check.fail(std::string(key) + "[" + std::to_string(i) + "]",
                  "expected a point code 0-3, got " + FieldChecker::describe(v));
     codes[i] = static_cast<std::uint8_t>(v.get<int>());
@@ -125,7 +127,7 @@ void ScanLogReader::parseHeader() {
   const FieldChecker check(lines_.path(), lines_.lineNumber());
   const Json object = parseLine(text, lines_.path(), lines_.lineNumber());
   const Json& version = check.require(object, "scanlog");
-  if (!version.is_number_integer() || version.get<int>() != 1)
+  if (!version.is_number_integer() || version.get<std::int64_t>() != 1)
     check.fail("scanlog", "unsupported version " + FieldChecker::describe(version) + "; expected 1");
   header_.version = 1;
   if (const auto it = object.find("source"); it != object.end() && it->is_string())

@@ -1,6 +1,7 @@
 #include "scanfilter/scan_source.hpp"
 
 #include "scanfilter/carmen_log_reader.hpp"
+#include "scanfilter/input_error.hpp"
 #include "scanfilter/line_reader.hpp"
 #include "scanfilter/mines_log_reader.hpp"
 #include "scanfilter/scan_log_reader.hpp"
@@ -12,8 +13,12 @@ std::unique_ptr<ScanSource> openScanSource(const std::string& path, const ScanSo
   // 707 numbers; anything else is read as CARMEN.
   LineReader probe(path);
   std::string first;
-  while (probe.next(first) && first.find_first_not_of(" \t") == std::string::npos) {
+  bool any_line = false;
+  while (probe.next(first)) {
+    any_line = true;
+    if (first.find_first_not_of(" \t") != std::string::npos) break;
   }
+  if (!any_line) throw InputError(path, 0, "", "empty file: expected a scan log, a CARMEN log or a Mines log");
   const auto start = first.find_first_not_of(" \t");
   if (start != std::string::npos && first[start] == '{') return std::make_unique<ScanLogReader>(path);
   if (MinesLogReader::looksLikeMinesLine(first)) return std::make_unique<MinesLogReader>(path);

@@ -47,6 +47,12 @@ void toMessage(const Scan& scan, const SensorInfo& sensor, std::uint64_t sequenc
 // ("length_mismatch", "nan_pose", "zero_increment", "too_many_beams",
 // "empty", "bad_label", "bad_stamp"), or nothing when it is fine.
 std::optional<std::string> rejectionReason(const LabeledScanMsg& msg);
+// The same for a driver's LaserScan ("empty", "too_many_beams",
+// "length_mismatch", "zero_increment", "bad_sensor", "bad_stamp") and
+// Odometry ("nan_pose", "bad_stamp"): scan_ingest's live source checks every
+// sample with these before it converts it.
+std::optional<std::string> laserScanRejectionReason(const LaserScanMsg& msg);
+std::optional<std::string> odometryRejectionReason(const OdometryMsg& msg);
 
 // The scan and sensor in a (valid) LabeledScan; ranges outside the sensor's
 // limits become NaN exactly as the scan log reader makes them (the recorded
