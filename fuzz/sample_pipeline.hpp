@@ -14,6 +14,7 @@
 
 #include <fastdds/rtps/common/SerializedPayload.h>
 
+#include "scanfilter/dds/checked_type_support.hpp"
 #include "scanfilter/dds/per_sensor_filter.hpp"
 #include "scanfilter/dds/scan_message.hpp"
 #include "scanfilter/jump_filter.hpp"
@@ -28,14 +29,15 @@ inline constexpr std::size_t kMaxFrames = 8;  // scans a filter sees per input: 
 // remaining bytes.
 std::vector<std::span<const std::uint8_t>> splitFrames(const std::uint8_t* data, std::size_t size);
 
-// Deserialises one sample as Fast DDS does on receipt; false when the bytes
-// are not a sample of that type (Fast DDS drops those).
+// Deserialises one sample as the services' readers do on receipt (through
+// CheckedPubSubType, as TypedReader registers the type); false when the
+// bytes are not a sample of that type (Fast DDS drops those).
 template <typename PubSubType>
 bool deserialize(std::span<const std::uint8_t> bytes, typename PubSubType::type& sample) {
   eprosima::fastrtps::rtps::SerializedPayload_t payload(static_cast<std::uint32_t>(bytes.size()));
   std::copy(bytes.begin(), bytes.end(), payload.data);
   payload.length = static_cast<std::uint32_t>(bytes.size());
-  PubSubType type;
+  dds_io::CheckedPubSubType<PubSubType> type;
   return type.deserialize(&payload, &sample);
 }
 

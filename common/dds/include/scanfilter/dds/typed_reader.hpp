@@ -9,6 +9,7 @@
 #include <fastdds/dds/subscriber/DataReaderListener.hpp>
 #include <fastdds/dds/subscriber/SampleInfo.hpp>
 
+#include "scanfilter/dds/checked_type_support.hpp"
 #include "scanfilter/dds/dds_participant.hpp"
 
 namespace scanfilter::dds_io {
@@ -32,7 +33,7 @@ class TypedReader : private eprosima::fastdds::dds::DataReaderListener {
   TypedReader(DdsParticipant& participant, const std::string& topic_name,
               const eprosima::fastdds::dds::DataReaderQos& qos, Callback callback)
       : participant_(participant), callback_(std::move(callback)) {
-    auto* topic = participant.topic(topic_name, eprosima::fastdds::dds::TypeSupport(new PubSubType()));
+    auto* topic = participant.topic(topic_name, eprosima::fastdds::dds::TypeSupport(new CheckedPubSubType<PubSubType>()));
     reader_ = participant.subscriber()->create_datareader(topic, qos, this,
                                                           eprosima::fastdds::dds::StatusMask::subscription_matched());
     if (reader_ == nullptr) throw std::runtime_error("cannot create a reader on " + topic_name);
