@@ -92,6 +92,32 @@ TEST(SampleRegression, LaserScanRangeLimitsChecked) {
   EXPECT_EQ(laserScanRejectionReason(msg), "zero_increment");
 }
 
+// A pose of 9.3e181 m passed the checks and overflowed the int cell index
+// of the penetration grid (UBSan float-cast-overflow); ranges up to a
+// float's 3e38 m would too.
+TEST(SampleRegression, ImplausiblePoseAndRangeLimitRejected) {
+  LabeledScanMsg msg;
+  msg.ranges({1.0, 2.0});
+  msg.angle_increment(0.1);
+  msg.range_min(0.1);
+  msg.range_max(10.0);
+  msg.angular_accuracy_deg(0.5);
+  EXPECT_FALSE(rejectionReason(msg).has_value());
+  msg.pose_x(9.33641e+181);
+  EXPECT_EQ(rejectionReason(msg), "implausible_pose");
+  msg.pose_x(0.0);
+  msg.mount_y(-2e6);
+  EXPECT_EQ(rejectionReason(msg), "implausible_pose");
+  msg.mount_y(0.0);
+  msg.range_max(1e30);
+  EXPECT_EQ(rejectionReason(msg), "bad_sensor");
+  msg.range_max(10.0);
+  msg.angular_accuracy_deg(1e-300);
+  EXPECT_EQ(rejectionReason(msg), "bad_sensor");
+  msg.angular_accuracy_deg(1e300);
+  EXPECT_EQ(rejectionReason(msg), "bad_sensor");
+}
+
 TEST(SampleRegression, OdometryChecked) {
   OdometryMsg msg;
   msg.pose().pose().orientation().w(1.0);

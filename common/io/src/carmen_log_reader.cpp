@@ -9,6 +9,7 @@
 #include <spdlog/spdlog.h>
 
 #include "scanfilter/input_error.hpp"
+#include "scanfilter/plausible_bounds.hpp"
 
 namespace scanfilter {
 
@@ -23,6 +24,8 @@ constexpr std::size_t kFlaserTrailingFields = 9;
 // tv rv forward_safety_dist side_safety_dist, ipc_timestamp ipc_hostname logger_timestamp.
 constexpr std::size_t kRobotLaserTrailingFields = 13;
 constexpr std::size_t kRobotLaserHeadFields = 9;  // name .. num_readings
+constexpr double kMinResolution = 1e-8;                   // rad
+constexpr double kMaxResolution = std::numbers::pi / 2;  // rad: 90 degrees
 
 // A count read from a line: a whole number from 0 up to the fields the line
 // has (a larger one cannot be right, and converting it could overflow).
@@ -106,6 +109,12 @@ void CarmenLogReader::setRanges(const std::vector<std::string>& tokens, std::siz
   }
 }
 
+void CarmenLogReader::checkPlausiblePose(const Pose2& pose) const {
+  if (!isPlausibleCoordinate(pose.x) || !isPlausibleCoordinate(pose.y))
+    fail("x/y", "pose more than " + std::to_string(static_cast<long>(kMaxPlausibleCoordinate)) +
+                    " m from the origin; corrupt data");
+}
+
 void CarmenLogReader::parseFlaser(const std::vector<std::string>& tokens, Scan& scan) const {
   const double n_value = number(tokens, 1, "num_readings");
   if (n_value < 1.0 || !isCountWithin(n_value, tokens.size()))
@@ -117,6 +126,7 @@ void CarmenLogReader::parseFlaser(const std::vector<std::string>& tokens, Scan& 
   setRanges(tokens, 2, n, scan);
   const std::size_t pose = 2 + n;
   scan.pose = {number(tokens, pose, "x"), number(tokens, pose + 1, "y"), number(tokens, pose + 2, "theta")};
+  checkPlausiblePose(scan.pose);
   scan.stamp = stamp(tokens, pose + 6);
   const double steps = n % 2 == 1 && n > 1 ? static_cast<double>(n - 1) : static_cast<double>(n);
   scan.angle_min = -kFlaserFieldOfView / 2.0;
@@ -126,7 +136,9 @@ void CarmenLogReader::parseFlaser(const std::vector<std::string>& tokens, Scan& 
 void CarmenLogReader::parseRobotLaser(const std::vector<std::string>& tokens, Scan& scan) const {
   const double start_angle = number(tokens, 2, "start_angle");
   const double resolution = number(tokens, 4, "angular_resolution");
-  if (resolution == 0.0) fail("angular_resolution", "is 0; expected a non-zero step");
+  // Δθ defaults to this step; the filter accepts 0 < Δθ <= 90 degrees.
+  if (!(std::abs(resolution) >= kMinResolution && std::abs(resolution) <= kMaxResolution))
+    fail("angular_resolution", "expected a step of 1e-8 to pi/2 rad, got \"" + tokens[4] + "\"");
   const double n_value = number(tokens, 8, "num_readings");
   if (n_value < 1.0 || !isCountWithin(n_value, tokens.size()))
     fail("num_readings", "expected a positive integer up to the line's field count, got \"" + tokens[8] + "\"");
@@ -149,6 +161,7 @@ void CarmenLogReader::parseRobotLaser(const std::vector<std::string>& tokens, Sc
   // The laser pose is given directly, so it is the pose and the mount is zero.
   scan.pose = {number(tokens, after, "laser_pose_x"), number(tokens, after + 1, "laser_pose_y"),
                number(tokens, after + 2, "laser_pose_theta")};
+  checkPlausiblePose(scan.pose);
   scan.stamp = stamp(tokens, after + 10);
   scan.angle_min = start_angle;
   scan.angle_increment = resolution;

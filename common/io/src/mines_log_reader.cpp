@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "scanfilter/input_error.hpp"
+#include "scanfilter/plausible_bounds.hpp"
 
 namespace scanfilter {
 
@@ -97,6 +98,10 @@ bool MinesLogReader::next(ScanRecord& record) {
   stamp_order_.check(scan.stamp, record.line);
   integrateOdometry(integerField(tokens, kLeftTicksField, "left_ticks"),
                     integerField(tokens, kRightTicksField, "right_ticks"));
+  if (!isPlausibleCoordinate(pose_.x) || !isPlausibleCoordinate(pose_.y))
+    throw InputError(lines_.path(), lines_.lineNumber(), "left_ticks/right_ticks",
+                     "dead-reckoned pose more than " + std::to_string(static_cast<long>(kMaxPlausibleCoordinate)) +
+                         " m from the start; corrupt tick counts");
   scan.pose = pose_;
   scan.angle_min = model_.angle_min_deg * kDeg;
   scan.angle_increment = model_.field_of_view_deg / (model_.beams - 1) * kDeg;

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "scanfilter/input_error.hpp"
+#include "scanfilter/plausible_bounds.hpp"
 #include "scanfilter/point_code.hpp"
 
 namespace scanfilter {
@@ -136,6 +137,9 @@ void ScanLogReader::parseHeader() {
   const Json& sensor = check.require(object, "sensor");
   if (!sensor.is_object()) check.fail("sensor", "expected an object");
   const auto mount = check.triple(check.require(sensor, "mount"), "sensor.mount");
+  if (!isPlausibleCoordinate(mount[0]) || !isPlausibleCoordinate(mount[1]))
+    check.fail("sensor.mount", "is more than " + std::to_string(static_cast<long>(kMaxPlausibleCoordinate)) +
+                                   " m from the robot; corrupt data");
   header_.sensor.mount = {mount[0], mount[1], mount[2]};
   const Json& direction = check.require(sensor, "direction");
   if (direction == "ccw") {
@@ -149,11 +153,17 @@ void ScanLogReader::parseHeader() {
   s.range_min = check.finiteNumber(check.require(sensor, "range_min"), "sensor.range_min");
   s.range_max = check.finiteNumber(check.require(sensor, "range_max"), "sensor.range_max");
   if (s.range_min < 0.0) check.fail("sensor.range_min", "is negative; expected >= 0");
+  if (s.range_max > kImplausibleRange)
+    check.fail("sensor.range_max", "is beyond any indoor sensor; expected <= " +
+                                       std::to_string(static_cast<int>(kImplausibleRange)) + " m");
   if (!(s.range_max > s.range_min))
     check.fail("sensor.range_max", "must exceed range_min (" + std::to_string(s.range_min) + ")");
   s.angular_accuracy_deg =
       check.finiteNumber(check.require(sensor, "angular_accuracy_deg"), "sensor.angular_accuracy_deg");
-  if (!(s.angular_accuracy_deg > 0.0)) check.fail("sensor.angular_accuracy_deg", "expected > 0");
+  // The filter config's bounds on Δθ (config/filter.yaml): the obstacle
+  // threshold is scaled by it, and 1e-300 would overflow that count.
+  if (!(s.angular_accuracy_deg >= 1e-6 && s.angular_accuracy_deg <= 90.0))
+    check.fail("sensor.angular_accuracy_deg", "expected 0 < value <= 90 (degrees)");
 }
 
 bool ScanLogReader::next(ScanRecord& record) {
@@ -176,6 +186,9 @@ void ScanLogReader::parseScan(const Json& object, std::string_view stamp_text, S
   scan.stamp = *stamp;
   stamp_order_.check(scan.stamp, lines_.lineNumber());
   const auto pose = check.triple(check.require(object, "pose"), "pose");
+  if (!isPlausibleCoordinate(pose[0]) || !isPlausibleCoordinate(pose[1]))
+    check.fail("pose", "is more than " + std::to_string(static_cast<long>(kMaxPlausibleCoordinate)) +
+                           " m from the origin; corrupt data");
   scan.pose = {pose[0], pose[1], pose[2]};
   scan.angle_min = check.finiteNumber(check.require(object, "angle_min"), "angle_min");
   scan.angle_increment = check.finiteNumber(check.require(object, "angle_increment"), "angle_increment");
