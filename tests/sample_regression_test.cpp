@@ -1,7 +1,10 @@
 // Regression tests for what the sample fuzzers (fuzz/*_sample_fuzz) found in
 // the services' handling of samples from the wire. The crashing inputs are
 // also in fuzz/corpus/<target>/regression-*.
+#include <unistd.h>
+
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <limits>
 #include <string>
@@ -11,6 +14,8 @@
 
 #include "scanfilter/dds/checked_type_support.hpp"
 #include "scanfilter/dds/scan_message.hpp"
+#include "scanfilter/dds/service_config.hpp"
+#include "scanfilter/input_error.hpp"
 #include "scanfilter_typesPubSubTypes.h"
 
 namespace scanfilter::dds_io {
@@ -127,6 +132,21 @@ TEST(SampleRegression, OdometryChecked) {
   msg.pose().pose().orientation().z(0.0);
   msg.header().stamp().nanosec(2'000'000'000u);
   EXPECT_EQ(odometryRejectionReason(msg), "bad_stamp");
+}
+
+// A profiles_file name longer than the file system allows made
+// std::filesystem::exists throw filesystem_error out of loadServiceConfig
+// (found by penetration_filter_config_fuzz); now it is a located InputError.
+TEST(SampleRegression, ServiceConfigProfilesNameTooLong) {
+  const std::string path = ::testing::TempDir() + "/name-too-long-" + std::to_string(::getpid()) + ".yaml";
+  std::ofstream(path) << "service:\n  profiles_file: '" << std::string(5000, 'a') << "'\n";
+  try {
+    loadServiceConfig(path, "127.0.0.1:9470", {});
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(":2: service.profiles_file: no such file"), std::string::npos) << e.what();
+  }
+  std::remove(path.c_str());
 }
 
 }  // namespace

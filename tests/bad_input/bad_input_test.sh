@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Bad input for one program: each of seven bad files in place of the file it
-# reads. Every case must exit 1 or 2 (not a crash, not 0), print exactly one
+# reads. Every case must exit 1-125 (not 0, not a crash), print exactly one
 # line (stdout and stderr together) that names the file, and leave no output
 # file behind (nor a .partial/.tmp one). Cases: missing, directory, empty,
 # truncated_gzip, binary, long_line (a 2 GB line, streamed through a FIFO so
@@ -46,7 +46,8 @@ make_bad_files() {  # kind: log | yaml (what the wrong-type file is)
   mkdir -p "$BAD/directory"
   # A real compressed log cut short: the end of the gzip stream is missing.
   local gz=$WORK/whole.gz size
-  for _ in $(seq 200); do tail -n 2 "$GOOD_LOG"; done | cat <(head -n 1 "$GOOD_LOG") - | gzip -9 >"$gz"
+  { head -n 1 "$GOOD_LOG"
+    for i in $(seq 400); do sed -n "2s/\"stamp\":1.0/\"stamp\":$i/p" "$GOOD_LOG"; done; } | gzip -9 >"$gz"
   size=$(stat -c %s "$gz")
   head -c $((size / 2)) "$gz" >"$BAD/truncated.gz"
   # An executable's bytes: NULs, control bytes, invalid UTF-8.
@@ -85,7 +86,8 @@ check_case() {  # case file [need_line]: runs RUN with FILE set, checks the outc
   if [ -n "$FEEDER" ]; then kill "$FEEDER" 2>/dev/null || true; wait "$FEEDER" 2>/dev/null || true; FEEDER=""; fi
   local lines problem=""
   lines=$(grep -c . <<<"$output" || true)
-  if [ "$status" -ne 1 ] && [ "$status" -ne 2 ]; then problem="exit status $status, expected 1 or 2"
+  # 126 and up: not runnable, or killed by a signal (a crash, the time limit).
+  if [ "$status" -eq 0 ] || [ "$status" -ge 126 ]; then problem="exit status $status, expected a failure exit (1-125)"
   elif [ "$lines" -ne 1 ]; then problem="$lines lines of output, expected exactly one"
   elif ! grep -qF "$(basename "$file")" <<<"$output"; then problem="the message does not name $(basename "$file")"
   elif [ -n "$need_line" ] && ! grep -qE "$(basename "$file"):[0-9]+:" <<<"$output"; then problem="the message names no line"
@@ -127,7 +129,9 @@ case "$PROGRAM" in
       replay) RUN="'$SF' replay \"\$FILE\" -q -o '$WORK/out.scanlog.jsonl' --render '$WORK/out.png'" ;;
       map) RUN="'$SF' map \"\$FILE\" -o '$WORK/out'" ;;
       render) RUN="'$SF' render \"\$FILE\" -o '$WORK/out.png'" ;;
-      diff) RUN="'$SF' diff '$GOOD_LOG' \"\$FILE\"" ;;
+      # The file against itself: both are read to the end (a good file
+      # beside it would end first and stop the comparison).
+      diff) RUN="'$SF' diff \"\$FILE\" \"\$FILE\"" ;;
       report_real) RUN="'$SF' report-real \"\$FILE\" -o '$OUT'" ;;
       ros_scan_publisher)
         RUN="'$BUILD/dds_tools/ros_scan_publisher' \"\$FILE\" --profiles-file '$WORK/fastdds-loopback.xml' --domain 7" ;;

@@ -1,5 +1,6 @@
 #include "scanfilter/yaml_section.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -91,13 +92,21 @@ std::string readConfigText(const std::string& path) {
   char chunk[kChunk];
   while (in.read(chunk, kChunk) || in.gcount() > 0) {
     text.append(chunk, static_cast<std::size_t>(in.gcount()));
-    if (text.size() > kMaxConfigBytes)
-      throw InputError(path, 0, "", "larger than " + std::to_string(kMaxConfigBytes >> 20) + " MiB; not a config file");
+    if (text.size() > kMaxConfigBytes) {
+      const auto line = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
+      throw InputError(path, line, "", "file larger than " + std::to_string(kMaxConfigBytes >> 20) + " MiB; not a config file");
+    }
   }
   if (in.bad()) throw InputError(path, 0, "", "read error");
   return text;
 }
 
-YAML::Node loadYamlFile(const std::string& path) { return parseYaml(readConfigText(path), path); }
+YAML::Node loadYamlFile(const std::string& path) {
+  YAML::Node root = parseYaml(readConfigText(path), path);
+  // Nothing but blanks and comments: most likely a file cut short or the
+  // wrong file, never a config meaning "all defaults".
+  if (!root || root.IsNull()) throw InputError(path, 0, "", "empty file: expected a YAML mapping");
+  return root;
+}
 
 }  // namespace scanfilter

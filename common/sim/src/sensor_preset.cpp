@@ -38,7 +38,8 @@ std::vector<std::string> builtinSensorNames() { return builtinNames(builtinSenso
 void applySensor(Scene& scene, const std::string& name_or_path) {
   if (const auto text = builtinText(builtinSensorTexts(), name_or_path))
     return parsePreset(*text, "builtin sensor " + name_or_path, scene);
-  if (std::filesystem::exists(name_or_path)) return parsePreset(readConfigText(name_or_path), name_or_path, scene);
+  std::error_code error;  // a name too long is "no such file", not an exception
+  if (std::filesystem::exists(name_or_path, error)) return parsePreset(readConfigText(name_or_path), name_or_path, scene);
   throw InputError(name_or_path, 0, "",
                    "no such sensor file, and not a built-in sensor (" + namesList(builtinSensorTexts()) + ")");
 }
