@@ -71,7 +71,8 @@ make_long_line() {
 OUT=$WORK/out
 outputs_left() {
   local left
-  left=$(find "$WORK" -maxdepth 1 \( -name 'out*' -o -name '*.partial' -o -name '*.tmp' \) -print)
+  # Files only: an output directory made before the input failed holds nothing.
+  left=$(find "$WORK" -maxdepth 1 -type f \( -name 'out*' -o -name '*.partial' -o -name '*.tmp' \) -print)
   [ -d "$OUT" ] && left+=$(find "$OUT" -mindepth 1 -print)
   printf '%s' "$left"
 }

@@ -1,5 +1,11 @@
 #include "scanfilter/scan_source.hpp"
 
+#include <zlib.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <vector>
+
 #include "scanfilter/carmen_log_reader.hpp"
 #include "scanfilter/input_error.hpp"
 #include "scanfilter/line_reader.hpp"
@@ -8,9 +14,39 @@
 
 namespace scanfilter {
 
+namespace {
+
+// A gzip file is decompressed once to its end before any scan is read, so a
+// truncated or corrupt one fails at open with the line where it breaks, not
+// after a player has published half of it. Plain files pass at no cost.
+void checkGzipIntact(const std::string& path) {
+  // Only regular files: a pipe cannot be read twice (nor a gzip one seeked).
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) return;
+  gzFile file = gzopen(path.c_str(), "rb");
+  if (file == nullptr) return;  // the reader reports it
+  if (gzdirect(file) == 1) {
+    gzclose(file);
+    return;
+  }
+  constexpr unsigned kChunk = 1u << 20;
+  std::vector<char> buffer(kChunk);
+  std::size_t lines = 1;
+  int n = 0;
+  while ((n = gzread(file, buffer.data(), kChunk)) > 0) lines += static_cast<std::size_t>(std::count(buffer.begin(), buffer.begin() + n, '\n'));
+  int err = Z_OK;
+  const std::string message = gzerror(file, &err);
+  gzclose(file);
+  if (n < 0 || (err != Z_OK && err != Z_STREAM_END))
+    throw InputError(path, lines, "", "gzip data truncated or corrupt (" + message + ")");
+}
+
+}  // namespace
+
 std::unique_ptr<ScanSource> openScanSource(const std::string& path, const ScanSourceOptions& options) {
   // A scan log starts with a JSON object, a Mines URG-04LX log with a line of
   // 707 numbers; anything else is read as CARMEN.
+  checkGzipIntact(path);
   LineReader probe(path);
   std::string first;
   bool any_line = false;
