@@ -114,6 +114,26 @@ TEST(FuzzRegression, ScanLogLabelBeyondInt) {
   EXPECT_NE(error.find(":2: labels[0]: expected a point code 0-3, got 4294967296"), std::string::npos) << error;
 }
 
+// A number beyond a double (1e400) made nlohmann throw out_of_range, which
+// escaped the reader instead of an InputError naming the line.
+TEST(FuzzRegression, ScanLogNumberBeyondDouble) {
+  TempFile log("overflow.scanlog.jsonl",
+               R"({"scanlog":1,"sensor":{"mount":[0,0,0],"direction":"ccw","range_min":0.1,"range_max":10,"angular_accuracy_deg":1}})"
+               "\n"
+               R"({"stamp":1,"pose":[1e400,0,0],"angle_min":0,"angle_increment":0.1,"ranges":[1,2]})"
+               "\n");
+  const std::string error = errorOf([&] {
+    ScanLogReader reader(log.path());
+    readAll(reader);
+  });
+  EXPECT_NE(error.find(":2: unreadable JSON: [json.exception.out_of_range.406] number overflow"), std::string::npos) << error;
+  TempFile corpus("overflow-corpus.scanlog.jsonl", corpusFile("scan_log_reader_fuzz", "regression-number-overflow.jsonl"));
+  EXPECT_NO_THROW(errorOf([&] {
+    ScanLogReader reader(corpus.path());
+    readAll(reader);
+  }));
+}
+
 // A mapping where a word belongs (material, name) and a list used as a key
 // escaped as yaml-cpp's TypedBadConversion instead of a located InputError.
 TEST(FuzzRegression, SceneNonScalarWhereAWordBelongs) {

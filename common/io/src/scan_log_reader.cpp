@@ -64,6 +64,9 @@ Json parseLine(const std::string& text, const std::string& file, std::size_t lin
     return object;
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(file, line, "", std::string("malformed JSON: ") + e.what());
+  } catch (const nlohmann::json::exception& e) {
+    // out_of_range.406: a number beyond a double (1e400), found by scan_log_reader_fuzz.
+    throw InputError(file, line, "", std::string("unreadable JSON: ") + e.what());
   }
 }
 
