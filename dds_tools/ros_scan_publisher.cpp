@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "scanfilter/dds/dds_participant.hpp"
+#include "scanfilter/dds/default_paths.hpp"
 #include "scanfilter/dds/scan_message.hpp"
 #include "scanfilter/dds/shutdown_signal.hpp"
 #include "scanfilter/dds/stream_qos.hpp"
@@ -52,7 +53,7 @@ int main(int argc, char** argv) {
   // Bad arguments: one line (what and which), no usage dump.
   app.failure_message([](const CLI::App*, const CLI::Error& e) { return std::string(e.what()) + " (see --help)\n"; });
   ParticipantSettings settings;
-  settings.profiles_file = SCANFILTER_DEPLOY_DIR "/fastdds-loopback.xml";
+  settings.profiles_file = defaultProfilesFile();
   settings.name = "scanfilter_ros_scan_publisher";
   std::string input, ns, frame = "laser";
   double rate_hz = 0.0;
@@ -63,6 +64,8 @@ int main(int argc, char** argv) {
   app.add_option("--domain", settings.domain_id, "DDS domain id")->capture_default_str();
   app.add_option("--namespace", ns, "topic namespace (rt/<ns>/scan)");
   app.add_option("--profiles-file", settings.profiles_file, "Fast DDS XML profiles")->capture_default_str();
+  app.add_option("--enclave", settings.security.enclave,
+                 "DDS Security enclave directory (deploy/security/make-keystore.sh; default: security off)");
   app.add_option("--frame-id", frame, "LaserScan frame_id")->capture_default_str();
   app.add_option("--rate", rate_hz, "scans per second (0: the recorded pace)");
   app.add_option("--wait-readers", wait_readers, "wait for this many scan readers before publishing")->capture_default_str();

@@ -9,7 +9,9 @@
 #include <CLI/CLI.hpp>
 
 #include "scanfilter/dds/dds_participant.hpp"
+#include "scanfilter/dds/default_paths.hpp"
 #include "scanfilter/dds/scan_message.hpp"
+#include "scanfilter/dds/service_config.hpp"
 #include "scanfilter/dds/shutdown_signal.hpp"
 #include "scanfilter/dds/stream_qos.hpp"
 #include "scanfilter/dds/topic_names.hpp"
@@ -25,9 +27,9 @@ int main(int argc, char** argv) {
   // Bad arguments: one line (what and which), no usage dump.
   app.failure_message([](const CLI::App*, const CLI::Error& e) { return std::string(e.what()) + " (see --help)\n"; });
   ParticipantSettings participant_settings;
-  participant_settings.profiles_file = SCANFILTER_DEPLOY_DIR "/fastdds-loopback.xml";
+  participant_settings.profiles_file = defaultProfilesFile();
   participant_settings.name = "scanfilter_scan_recorder";
-  std::string ns, topic = kLabeledScanTopic, output;
+  std::string ns, topic = kLabeledScanTopic, output, config;
   std::uint64_t count = 0;
   double timeout_s = 0;
   double idle_exit_s = 0;
@@ -37,15 +39,28 @@ int main(int argc, char** argv) {
   app.add_option("--namespace", ns, "topic namespace (rt/<ns>/...)");
   app.add_option("--topic", topic, "topic name under rt/<ns>/")->capture_default_str();
   app.add_option("--profiles-file", participant_settings.profiles_file, "Fast DDS XML profiles")->capture_default_str();
+  std::string enclave;
+  app.add_option("--enclave", enclave,
+                 "DDS Security enclave directory (deploy/security/make-keystore.sh; default: security off, or "
+                 "--config's service.security)");
   app.add_option("--count", count, "stop after this many scans (0: until SIGINT/SIGTERM)");
   app.add_option("--timeout", timeout_s, "stop after this many seconds (0: no limit)");
   app.add_option("--idle-exit", idle_exit_s, "stop once no scan arrived for this many seconds after the first (0: never)");
   app.add_option("--queue-depth", queue_depth, "reliable reader queue (match the services')")->capture_default_str();
+  app.add_option("--config", config,
+                 "a YAML file with only a `service` section (config/scan_ingest.yaml documents it): its domain, "
+                 "profile and discovery replace --domain and --profiles-file, e.g. to record on another host");
   app.set_version_flag("--version", "scan_recorder (scanfilter " SCANFILTER_VERSION ")");
   CLI11_PARSE(app, argc, argv);
 
   try {
     ShutdownSignal::install();
+    if (!config.empty()) {
+      const std::string name = participant_settings.name;
+      participant_settings = loadServiceConfig(config, "127.0.0.1:0", {}).service.participant;
+      participant_settings.name = name;
+    }
+    if (!enclave.empty()) participant_settings.security.enclave = enclave;
     DdsParticipant participant(participant_settings);
     std::mutex mutex;
     std::optional<ScanLogWriter> writer;

@@ -14,6 +14,12 @@ PACKAGES=(
   # DDS services (issue 3 and later)
   libfastrtps-dev libfastcdr-dev fastddsgen fastdds-tools prometheus-cpp-dev
   cyclonedds-dev cyclonedds-tools prometheus iproute2 util-linux curl
+  # systemd units and the .deb (issue 11): sd_notify, systemd-analyze,
+  # dpkg-shlibdeps for cpack's dependency list, the notify test, the
+  # system-call filter test
+  libsystemd-dev systemd dpkg-dev adduser python3 strace
+  # DDS Security keystores (deploy/security/make-keystore.sh, tests/security/)
+  openssl
   # fuzzing (scripts/fuzz.sh: libFuzzer, ASan, UBSan)
   clang libclang-rt-14-dev
 )

@@ -74,6 +74,16 @@ TEST(MapFiles, SaveLoadContinueEqualsOneGo) {
       ASSERT_EQ(whole->logOdds({x, y}), continued.logOdds({x, y})) << x << ", " << y;
 }
 
+// The note travels inside BASE.logodds (one rename with the state it describes).
+TEST(MapFiles, NoteSavedWithTheState) {
+  const std::string base = (std::filesystem::path(::testing::TempDir()) / "noted").string();
+  saveMap(*mapOf(0, 10), base, "scans_integrated: 10\nlast_sequence: 9\n");
+  OccupancyGrid loaded{OccupancyGridParams{}};
+  EXPECT_EQ(loadMapState(loaded, base), "scans_integrated: 10\nlast_sequence: 9\n");
+  saveMap(*mapOf(0, 10), base);
+  EXPECT_EQ(loadMapState(loaded, base), "");
+}
+
 // Reads the saved PGM and YAML back with a parser of its own, not the writer's code.
 TEST(MapFiles, PgmAndYamlReadBack) {
   const std::string base = (std::filesystem::path(::testing::TempDir()) / "room").string();

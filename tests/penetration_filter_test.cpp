@@ -217,6 +217,27 @@ TEST(PenetrationGrid, CountsAddAndRemove) {
   EXPECT_EQ(grid.tileCount(), 0u) << "an empty tile is freed";
 }
 
+TEST(PenetrationGrid, TheTileJustBelowBothAxesIsFoundAfterAnotherWasCreated) {
+  // Cells -32..-1 in x and y form the tile whose key is all ones; a lookup
+  // cache that used that key to mean "nothing cached" answered for it with
+  // whatever tile it had cached last.
+  PenetrationGrid grid(0.05, 1);
+  // `elsewhere` sits in the same slot of its tile (cell 63, 63) as `corner` in its own.
+  const Eigen::Vector2d corner(-0.01, -0.01), elsewhere(3.17, 3.17);
+  grid.add(elsewhere);
+  grid.add(elsewhere);
+  EXPECT_EQ(grid.count(grid.cellOf(elsewhere)), 2);  // caches its tile
+  grid.add(Eigen::Vector2d(5.0, 5.0));               // a new tile: the cache is dropped
+  EXPECT_EQ(grid.count(grid.cellOf(corner)), 0) << "the corner tile holds nothing";
+  int obstacles = 0;
+  grid.forEachObstacleIn(grid.cellOf(corner), grid.cellOf(corner), [&](CellIndex) { ++obstacles; });
+  EXPECT_EQ(obstacles, 0);
+  grid.add(corner);
+  grid.add(corner);
+  EXPECT_EQ(grid.count(grid.cellOf(corner)), 2);
+  EXPECT_EQ(grid.count(grid.cellOf(elsewhere)), 2);
+}
+
 TEST(PenetrationRule, LiteralStepsBtoE) {
   PenetrationFilterParams p;
   p.corridor_half_width = 0.1;

@@ -10,6 +10,7 @@
 
 #include "map_metrics.hpp"
 #include "map_message.hpp"
+#include "map_progress.hpp"
 #include "publish_settings.hpp"
 #include "scanfilter/dds/scan_message.hpp"
 #include "scanfilter/dds/service_runtime.hpp"
@@ -17,6 +18,7 @@
 #include "scanfilter/dds/topic_names.hpp"
 #include "scanfilter/dds/typed_reader.hpp"
 #include "scanfilter/dds/typed_writer.hpp"
+#include "scanfilter/dds/upstream_liveliness.hpp"
 #include "scanfilter/map_config.hpp"
 #include "scanfilter/map_files.hpp"
 #include "scanfilter_typesPubSubTypes.h"
@@ -40,32 +42,53 @@ eprosima::fastdds::dds::DataWriterQos latchedMapQos() {
 // map and the changed rectangle when it changed, saves it now and then.
 class MapService {
  public:
-  MapService(ServiceRuntime& runtime, OccupancyGrid& grid, PublishSettings settings)
+  MapService(ServiceRuntime& runtime, OccupancyGrid& grid, PublishSettings settings, map_service::MapProgress progress)
       : runtime_(runtime),
         grid_(grid),
         settings_(std::move(settings)),
         metrics_(runtime.metrics()),
+        progress_(progress),
+        upstream_(runtime.metrics(), runtime.topic(kLabeledScanTopic)),
         map_writer_(runtime.participant(), runtime.topic("map"), latchedMapQos()),
         update_writer_(runtime.participant(), runtime.topic("map_updates"), rosDefaultWriterQos()),
         reader_(runtime.participant(), runtime.topic(kLabeledScanTopic), losslessReaderQos(runtime.settings().stream),
-                [this](LabeledScanMsg& msg) { integrate(msg); }) {
+                [this](LabeledScanMsg& msg) { integrate(msg); }, [this](int alive) { upstream_.onChanged(alive); }) {
     runtime.reportMatched("reader", runtime.topic(kLabeledScanTopic), [this] { return reader_.matchedWriters(); });
     runtime.reportMatched("writer", runtime.topic("map"), [this] { return map_writer_.matchedReaders(); });
     runtime.reportMatched("writer", runtime.topic("map_updates"), [this] { return update_writer_.matchedReaders(); });
+    if (!settings_.save_path.empty()) metrics_.savedMapCurrent();  // the map starts empty or as loaded: nothing unsaved
   }
 
   // Once per publishing period.
   void tick() {
     publishIfChanged();
     metrics_.lastPublishAge(std::chrono::duration<double>(std::chrono::steady_clock::now() - last_publish_).count());
-    if (std::chrono::steady_clock::now() - last_save_ > std::chrono::duration<double>(settings_.save_period_s)) save();
+    if (std::chrono::steady_clock::now() - last_save_ > std::chrono::duration<double>(settings_.save_period_s)) periodicSave();
+  }
+
+  // A periodic save that fails (disk full, folder gone) must not end the
+  // service and the map in memory with it: it says why and tries again next
+  // period, while scanfilter_map_last_save_timestamp_seconds stands still
+  // (alert ScanfilterMapNotSaved). The save at shutdown still fails loudly.
+  void periodicSave() {
+    try {
+      save();
+    } catch (const std::exception& e) {
+      spdlog::error("saving the map to {}.* failed: {}; the map stays in memory, next try in {} s",
+                    settings_.save_path, e.what(), settings_.save_period_s);
+    }
   }
 
   void save() {
     last_save_ = std::chrono::steady_clock::now();
     if (settings_.save_path.empty()) return;
     std::lock_guard lock(mutex_);
-    if (!grid_.bounds().empty()) saveMap(grid_, settings_.save_path);
+    if (!grid_.bounds().empty()) {
+      saveMap(grid_, settings_.save_path, progress_.toText());  // the state and which scans it holds, in one rename
+      progress_.save(settings_.save_path);  // a readable copy
+      metrics_.mapSaved();
+    }
+    metrics_.savedMapCurrent();
   }
 
  private:
@@ -79,6 +102,9 @@ class MapService {
     std::lock_guard lock(mutex_);
     grid_.integrate(scan_, sensor_, scan_.labels);
     metrics_.scanIntegrated();
+    if (progress_.scans_integrated++ == loaded_scans_)  // which scan a restart resumed at
+      spdlog::info("first scan integrated since start: sequence {}", msg.sequence_number());
+    progress_.last_sequence = msg.sequence_number();
   }
 
   void publishIfChanged() {
@@ -98,6 +124,9 @@ class MapService {
   OccupancyGrid& grid_;
   PublishSettings settings_;
   map_service::MapMetrics metrics_;
+  map_service::MapProgress progress_;  // what the map holds (saved with it)
+  const std::uint64_t loaded_scans_ = progress_.scans_integrated;
+  UpstreamLiveliness upstream_;
   std::mutex mutex_;
   Scan scan_;
   SensorInfo sensor_;
@@ -120,12 +149,16 @@ int main(int argc, char** argv) {
     const ServiceConfigFile& config = runtime.config();
     OccupancyGrid grid(readMapParams(config.root, config.path));
     const PublishSettings publish = readPublishSettings(config);
+    map_service::MapProgress progress;
     if (publish.load_on_start && !publish.save_path.empty() && std::filesystem::exists(publish.save_path + ".logodds")) {
-      loadMapState(grid, publish.save_path);
-      spdlog::info("continuing from {}.logodds ({} x {} cells)", publish.save_path, grid.bounds().width(),
-                   grid.bounds().height());
+      const std::string note = loadMapState(grid, publish.save_path);
+      progress = note.empty() ? map_service::MapProgress::load(publish.save_path)  // saved before the note existed
+                              : map_service::MapProgress::parse(note, publish.save_path + ".logodds");
+      spdlog::info("continuing from {}.logodds ({} x {} cells, {} scans, the last sequence {})", publish.save_path,
+                   grid.bounds().width(), grid.bounds().height(), progress.scans_integrated,
+                   progress.last_sequence ? std::to_string(*progress.last_sequence) : "none");
     }
-    MapService service(runtime, grid, publish);
+    MapService service(runtime, grid, publish, progress);
     const auto period = std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::duration<double>(1.0 / publish.rate_hz));
     runtime.runUntilStopped(period, [&] { service.tick(); });
     service.save();

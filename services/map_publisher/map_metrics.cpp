@@ -34,7 +34,16 @@ MapMetrics::MapMetrics(dds_io::ServiceMetrics& metrics)
                         .Help("Time to build and publish rt/map")
                         .Register(metrics.registry())
                         .Add(kLabels, dds_io::ServiceMetrics::latencyBuckets())),
-      publish_age_(gauge(metrics, "scanfilter_map_last_publish_age_seconds", "Seconds since rt/map was last published")) {}
+      publish_age_(gauge(metrics, "scanfilter_map_last_publish_age_seconds", "Seconds since rt/map was last published")),
+      saves_(prometheus::BuildCounter()
+                 .Name("scanfilter_map_saves_total")
+                 .Help("Times the map files were written")
+                 .Register(metrics.registry())
+                 .Add(kLabels)),
+      saved_time_family_(prometheus::BuildGauge()
+                             .Name("scanfilter_map_last_save_timestamp_seconds")
+                             .Help("Unix time the saved map files last held all of the map (absent: no save_path)")
+                             .Register(metrics.registry())) {}
 
 void MapMetrics::published(const OccupancyGrid& grid, double seconds) {
   publish_time_.Observe(seconds);
@@ -42,5 +51,9 @@ void MapMetrics::published(const OccupancyGrid& grid, double seconds) {
   bytes_.Set(static_cast<double>(grid.memoryBytes()));
   occupied_.Set(static_cast<double>(occupiedCells(grid)));
 }
+
+void MapMetrics::mapSaved() { saves_.Increment(); }
+
+void MapMetrics::savedMapCurrent() { saved_time_family_.Add(kLabels).SetToCurrentTime(); }
 
 }  // namespace scanfilter::map_service

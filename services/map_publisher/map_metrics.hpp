@@ -1,5 +1,6 @@
 #pragma once
 #include <prometheus/counter.h>
+#include <prometheus/family.h>
 #include <prometheus/gauge.h>
 #include <prometheus/histogram.h>
 
@@ -10,7 +11,8 @@ namespace scanfilter::map_service {
 
 // The map publisher's own metrics, on the service's endpoint: the map's
 // size and memory, scans integrated, occupied cells, and how long a publish
-// takes and how long ago the last one was.
+// takes and how long ago the last one was, and (when saving is configured)
+// when the saved files last held everything the map in memory holds.
 class MapMetrics {
  public:
   explicit MapMetrics(dds_io::ServiceMetrics& metrics);
@@ -19,6 +21,11 @@ class MapMetrics {
   // After a publish that took `seconds`: the map's figures now.
   void published(const OccupancyGrid& grid, double seconds);
   void lastPublishAge(double seconds) { publish_age_.Set(seconds); }
+  // The map files were just written (the last rename succeeded).
+  void mapSaved();
+  // The files hold everything in memory as of now (just saved, or nothing to
+  // save): the alert "map not saved for 10 min" watches this time.
+  void savedMapCurrent();
 
  private:
   prometheus::Gauge& cells_;
@@ -27,6 +34,9 @@ class MapMetrics {
   prometheus::Gauge& occupied_;
   prometheus::Histogram& publish_time_;
   prometheus::Gauge& publish_age_;
+  prometheus::Counter& saves_;
+  // Created at the first savedMapCurrent(): absent when nothing is saved.
+  prometheus::Family<prometheus::Gauge>& saved_time_family_;
 };
 
 }  // namespace scanfilter::map_service

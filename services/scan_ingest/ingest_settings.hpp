@@ -21,6 +21,7 @@ struct IngestSettings {
   int wait_for_subscribers = 1;
   double wait_timeout_s = 30.0;
   bool exit_at_end = true;
+  std::string progress_path;
 };
 
 // Reads and validates the sections; throws InputError naming file, line and key.

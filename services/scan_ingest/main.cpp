@@ -15,6 +15,7 @@
 #include "scanfilter/dds/topic_names.hpp"
 #include "scanfilter/input_error.hpp"
 #include "scanfilter/sim/scan_simulator.hpp"
+#include "scanfilter/yaml_section.hpp"
 
 using namespace scanfilter;
 using namespace scanfilter::dds_io;
@@ -65,7 +66,8 @@ int runLive(ServiceRuntime& runtime, const IngestSettings& settings, ingest::Sca
 int runPlayback(ServiceRuntime& runtime, const IngestSettings& settings, ScanSource& source,
                 ingest::ScanPlayer::Writer& writer) {
   runtime.logStarted();
-  ingest::ScanPlayer player(source, writer, runtime.metrics(), settings.rate);
+  const ingest::PlaybackProgress progress(settings.progress_path);
+  ingest::ScanPlayer player(source, writer, runtime.metrics(), settings.rate, progress);
   const std::uint64_t published = player.play();
   writer.waitForAcknowledgments(runtime.settings().stream.max_blocking_s);
   spdlog::info("published {} scans", published);
@@ -87,6 +89,9 @@ int main(int argc, char** argv) {
     const StreamQos& stream = runtime.settings().stream;
     ingest::ScanPlayer::Writer writer(runtime.participant(), topic, losslessWriterQos(stream));
     writer.setFlowControl(flowControlWindow(stream), stream.max_blocking_s);
+    // Lossless: while the jump_filter is gone (crashed, restarting) the
+    // source holds instead of writing scans no reader will get.
+    writer.holdForReaders(settings.wait_for_subscribers, [] { return ShutdownSignal::requested(); });
     runtime.reportMatched("writer", topic, [&] { return writer.matchedReaders(); });
     spdlog::info("{} source; waiting for {} reader(s) of {}", settings.kind, settings.wait_for_subscribers, topic);
     if (!waitForSubscribers(writer, settings)) {

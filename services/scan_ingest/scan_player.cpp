@@ -30,23 +30,38 @@ std::uint64_t ScanPlayer::play() {
   const SensorInfo& sensor = source_.header().sensor;
   ScanRecord record;
   dds_io::LabeledScanMsg msg;
+  // Sequence numbers continue across a restart: the stages downstream see one stream.
+  const std::uint64_t resume_after = progress_.load();
   std::uint64_t sequence = 0;
+  for (; sequence < resume_after && source_.next(record); ++sequence) {}
+  if (resume_after > 0)
+    spdlog::info("resuming after the {} scans {} records as published", sequence, progress_.path());
+  const std::uint64_t first_sequence = sequence;
   bool first = true;
   Stamp first_stamp;
   const auto start = std::chrono::steady_clock::now();
+  const double held_at_start = writer_.heldSeconds();
   while (!dds_io::ShutdownSignal::requested() && source_.next(record)) {
     if (first) first_stamp = record.scan.stamp, first = false;
     if (!rate_.as_fast_as_accepted) {
-      // Sleep until the scan's recorded time, scaled by the speed.
-      const auto due = start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                   std::chrono::duration<double>(record.scan.stamp.secondsSince(first_stamp) / rate_.speed));
-      std::this_thread::sleep_until(due);
+      // Sleep until the scan's recorded time, scaled by the speed; the time
+      // the writer held (no reader downstream) does not count.
+      const double due_s = record.scan.stamp.secondsSince(first_stamp) / rate_.speed + (writer_.heldSeconds() - held_at_start);
+      std::this_thread::sleep_until(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                std::chrono::duration<double>(due_s)));
     }
     record.scan.labels.clear();  // the filters write labels; a log's old ones are not passed on
     const dds_io::TimeMsg received = dds_io::wallClockNow();
     dds_io::toMessage(record.scan, sensor, sequence, msg);
     dds_io::stampStage(msg, "scan_ingest", received);
+    // Counted as published before it is written: write() may deliver it and
+    // then wait long for acknowledgements, and a kill there must not make the
+    // restarted ingest send it again (a duplicate downstream); a kill between
+    // the two loses it instead, like the rest of the unacknowledged window.
+    progress_.record(sequence + 1);
     if (!writer_.write(msg)) {
+      progress_.record(sequence);  // not out after all
+      if (dds_io::ShutdownSignal::requested()) break;  // stopped while holding for a reader
       spdlog::error("scan {} not accepted by the pipeline within max_blocking_s (Fast DDS return code {}); stopping",
                     sequence, writer_.lastError());
       break;
@@ -54,7 +69,7 @@ std::uint64_t ScanPlayer::play() {
     metrics_.scanPublished();
     ++sequence;
   }
-  return sequence;
+  return sequence - first_sequence;
 }
 
 }  // namespace scanfilter::ingest

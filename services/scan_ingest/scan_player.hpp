@@ -4,6 +4,7 @@
 
 #include "scanfilter/dds/scan_message.hpp"
 #include "scanfilter/dds/service_metrics.hpp"
+#include "playback_progress.hpp"
 #include "scanfilter/dds/typed_writer.hpp"
 #include "scanfilter/scan_source.hpp"
 #include "scanfilter_typesPubSubTypes.h"
@@ -18,14 +19,19 @@ struct PlaybackRate {
 
 // Publishes every scan of a source as a posed LabeledScan, paced by the
 // recorded stamps (or by the pipeline), and stops early on SIGINT/SIGTERM.
+// While the writer holds (a stage downstream is gone) the recorded clock
+// stands still: the replay resumes where it was, nothing skipped. With a
+// progress file it continues after the scans an earlier run published.
 class ScanPlayer {
  public:
   using Writer = dds_io::TypedWriter<scanfilter_msgs::msg::dds_::LabeledScan_PubSubType>;
 
-  ScanPlayer(ScanSource& source, Writer& writer, dds_io::ServiceMetrics& metrics, PlaybackRate rate)
-      : source_(source), writer_(writer), metrics_(metrics), rate_(rate) {}
+  ScanPlayer(ScanSource& source, Writer& writer, dds_io::ServiceMetrics& metrics, PlaybackRate rate,
+             const PlaybackProgress& progress)
+      : source_(source), writer_(writer), metrics_(metrics), rate_(rate), progress_(progress) {}
 
-  // Plays the whole source; returns the scans published.
+  // Plays the whole source (from where the progress file says); returns the
+  // scans published by this run.
   std::uint64_t play();
 
  private:
@@ -33,6 +39,7 @@ class ScanPlayer {
   Writer& writer_;
   dds_io::ServiceMetrics& metrics_;
   PlaybackRate rate_;
+  const PlaybackProgress& progress_;
 };
 
 // Parses a rate as written in the config: "recorded", "max" or a factor.

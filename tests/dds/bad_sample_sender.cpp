@@ -40,7 +40,10 @@ LabeledScanMsg goodScan(std::uint64_t sequence) {
 
 int main(int argc, char** argv) {
   if (argc != 3) return 2;
-  ParticipantSettings settings{std::atoi(argv[1]), argv[2], "scanfilter_loopback", "bad_sample_sender"};
+  ParticipantSettings settings;
+  settings.domain_id = std::atoi(argv[1]);
+  settings.profiles_file = argv[2];
+  settings.name = "bad_sample_sender";
   DdsParticipant participant(settings);
   TypedWriter<scanfilter_msgs::msg::dds_::LabeledScan_PubSubType> writer(participant, rosTopic("", kPosedScanTopic),
                                                                          losslessWriterQos(StreamQos{}));

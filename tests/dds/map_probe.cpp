@@ -16,7 +16,10 @@ using namespace scanfilter::dds_io;
 
 int main(int argc, char** argv) {
   if (argc != 3) return 2;
-  ParticipantSettings settings{std::atoi(argv[1]), argv[2], "scanfilter_loopback", "map_probe"};
+  ParticipantSettings settings;
+  settings.domain_id = std::atoi(argv[1]);
+  settings.profiles_file = argv[2];
+  settings.name = "map_probe";
   DdsParticipant participant(settings);
   auto qos = rosDefaultReaderQos();
   qos.durability().kind = eprosima::fastdds::dds::TRANSIENT_LOCAL_DURABILITY_QOS;

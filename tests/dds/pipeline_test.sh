@@ -186,9 +186,12 @@ metrics)
   ;;
 prometheus)
   # The real Prometheus server scrapes all three services with the scrape
-  # config from deploy/; its query API shows them up and the counters.
+  # config from deploy/monitoring/ (its alert rules read from there); its
+  # query API shows them up and the counters.
   command -v prometheus > /dev/null || fail "prometheus is not installed (scripts/install-deps.sh)"
-  sed 's/:947\([1234]\)"/:1947\1"/g; s/scrape_interval: 5s/scrape_interval: 1s/' "$SRC/deploy/prometheus.yml" > "$WORK/prometheus.yml"
+  sed "s/:947\([1234]\)\"/:1947\1\"/g; s#^  - alerts.yml\$#  - $SRC/deploy/monitoring/alerts.yml#" \
+    "$SRC/deploy/monitoring/prometheus.yml" > "$WORK/prometheus.yml"
+  grep -q "^  - $SRC/deploy/monitoring/alerts.yml\$" "$WORK/prometheus.yml" || fail "the rule file path was not rewritten"
   prometheus --config.file="$WORK/prometheus.yml" --web.listen-address=127.0.0.1:19090 \
     --storage.tsdb.path="$WORK/tsdb" > "$WORK/prometheus.log" 2>&1 &
   PROM=$!; PIDS+=($PROM)
@@ -209,8 +212,8 @@ prometheus)
   ingested=$(prom_query 'scanfilter_scans_published_total{service="scan_ingest"}')
   [ "$ingested" = $FRAMES ] || fail "Prometheus saw scan_ingest published=$ingested"
   # Every query of the Grafana dashboard is valid PromQL over these metrics.
-  grep -o '"expr": "[^"]*"' "$SRC/deploy/grafana-dashboard.json" | sed 's/"expr": "\(.*\)"/\1/' > "$WORK/exprs"
-  [ -s "$WORK/exprs" ] || fail "no queries found in deploy/grafana-dashboard.json"
+  grep -o '"expr": "[^"]*"' "$SRC/deploy/monitoring/grafana-dashboard.json" | sed 's/"expr": "\(.*\)"/\1/' > "$WORK/exprs"
+  [ -s "$WORK/exprs" ] || fail "no queries found in deploy/monitoring/grafana-dashboard.json"
   while read -r expr; do
     reply=$(prom_api "$expr")
     grep -q '"status":"success"' <<<"$reply" || fail "dashboard query rejected by Prometheus: $expr: $reply"
@@ -316,7 +319,11 @@ YAML
     fail "implausible map: $probe"
   kill -TERM "$MAP"; wait "$MAP" || fail "map_publisher exited non-zero"
   "$SF" map "$WORK/in.scanlog.jsonl" --config "$SRC/config/filter.yaml" -o "$WORK/offline_map" > /dev/null
-  cmp "$WORK/live_map.logodds" "$WORK/offline_map.logodds" || fail "live and offline maps differ"
+  # The live state file carries the map publisher's note (which scans it holds) after the cells.
+  cells=$(stat -c %s "$WORK/offline_map.logodds")
+  cmp -n "$cells" "$WORK/live_map.logodds" "$WORK/offline_map.logodds" || fail "live and offline maps differ"
+  note=$(tail -c +$((cells + 1)) "$WORK/live_map.logodds")
+  grep -q "^scans_integrated: " <<<"$note" || fail "no scan count after the live map's cells: '$note'"
   cmp "$WORK/live_map.pgm" "$WORK/offline_map.pgm" || fail "live and offline PGMs differ"
   ;;
 config)

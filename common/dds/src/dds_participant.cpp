@@ -18,10 +18,13 @@ DdsParticipant::DdsParticipant(const ParticipantSettings& settings) {
   DomainParticipantQos qos;
   if (factory->get_participant_qos_from_profile(settings.profile, qos) != ReturnCode_t::RETCODE_OK)
     throw std::runtime_error(settings.profiles_file + ": no participant profile '" + settings.profile + "'");
+  applyDiscovery(settings.discovery, qos);
   qos.name(settings.name);
+  applySecurity(settings.security, qos);  // last: it checks the discovery setup it must not be combined with
   participant_ = factory->create_participant(static_cast<DomainId_t>(settings.domain_id), qos);
   if (participant_ == nullptr) throw std::runtime_error("cannot create a DDS participant on domain " +
-                                                        std::to_string(settings.domain_id));
+                                                        std::to_string(settings.domain_id) +
+                                                        securityFailureHint(settings.security));
   publisher_ = participant_->create_publisher(PUBLISHER_QOS_DEFAULT);
   subscriber_ = participant_->create_subscriber(SUBSCRIBER_QOS_DEFAULT);
   if (publisher_ == nullptr || subscriber_ == nullptr) throw std::runtime_error("cannot create publisher/subscriber");

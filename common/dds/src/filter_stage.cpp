@@ -2,6 +2,9 @@
 
 #include <chrono>
 
+#include <spdlog/spdlog.h>
+
+#include "scanfilter/dds/shutdown_signal.hpp"
 #include "scanfilter/dds/stream_qos.hpp"
 #include "scanfilter/point_code.hpp"
 
@@ -13,10 +16,13 @@ FilterStage::FilterStage(ServiceRuntime& runtime, std::string stage, const std::
       stage_(std::move(stage)),
       step_(std::move(step)),
       after_publish_(std::move(after_publish)),
+      upstream_(runtime.metrics(), runtime.topic(input)),
       writer_(runtime.participant(), runtime.topic(output), losslessWriterQos(runtime.settings().stream)),
       reader_(runtime.participant(), runtime.topic(input), losslessReaderQos(runtime.settings().stream),
-              [this](LabeledScanMsg& msg) { onSample(msg); }) {
+              [this](LabeledScanMsg& msg) { onSample(msg); }, [this](int alive) { upstream_.onChanged(alive); }) {
   writer_.setFlowControl(flowControlWindow(runtime.settings().stream), runtime.settings().stream.max_blocking_s);
+  // Lossless: a departed reader (a crashed stage) is waited for, not written past.
+  writer_.holdForReaders(runtime.settings().stream.required_readers, [] { return ShutdownSignal::requested(); });
   runtime.reportMatched("reader", runtime.topic(input), [this] { return reader_.matchedWriters(); });
   runtime.reportMatched("writer", runtime.topic(output), [this] { return writer_.matchedReaders(); });
 }
@@ -29,6 +35,8 @@ void FilterStage::onSample(LabeledScanMsg& msg) {
     rejections_.warn(*reason, "dropped scan " + std::to_string(msg.sequence_number()) + ": " + *reason);
     return;
   }
+  // Where a restarted stage picked the stream up (what a crash cost is counted from it).
+  if (processed_ == 0) spdlog::info("first scan since start: sequence {}", msg.sequence_number());
   if (!msg.timing().empty()) metrics_.hopLatency(toSeconds(received) - toSeconds(msg.timing().back().sent()));
 
   fromMessage(msg, scan_, sensor_);

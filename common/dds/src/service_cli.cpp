@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 
+#include "scanfilter/dds/default_paths.hpp"
 #include "scanfilter/input_error.hpp"
 
 namespace scanfilter::dds_io {
@@ -36,7 +37,7 @@ std::optional<int> ServiceCli::parse(int argc, char** argv) {
   // Bad arguments: one line (what and which), no usage dump.
   app.failure_message([](const CLI::App*, const CLI::Error& e) { return std::string(e.what()) + " (see --help)\n"; });
   app.set_version_flag("--version", name_ + " (scanfilter " + scanfilterVersion() + ")");
-  std::string config_path = std::string(SCANFILTER_CONFIG_DIR) + "/" + name_ + ".yaml";
+  std::string config_path = defaultConfigDir() + "/" + name_ + ".yaml";
   std::string log_level;
   std::optional<int> domain;
   std::optional<std::string> ns, metrics;

@@ -41,6 +41,9 @@ ServiceConfigFile loadServiceConfig(const std::string& path, const std::string& 
   section.readChoice("log_level", s.log_level, {"trace", "debug", "info", "warn", "error", "off"});
   section.read("queue_depth", s.stream.queue_depth);
   section.read("max_blocking_s", s.stream.max_blocking_s);
+  s.participant.discovery = readDiscoverySettings(section);
+  section.read("required_readers", s.stream.required_readers);
+  section.requireRange("required_readers", s.stream.required_readers, 0, 1000, "an integer 0-1000");
   section.requireRange("domain_id", s.participant.domain_id, 0, kMaxDomainId, "a DDS domain id 0-232");
   section.requireRange("queue_depth", s.stream.queue_depth, 1, 100000, "an integer 1-100000");
   section.requireRange("max_blocking_s", s.stream.max_blocking_s, 0.001, 3600, "0.001-3600 (s)");
@@ -53,6 +56,7 @@ ServiceConfigFile loadServiceConfig(const std::string& path, const std::string& 
   std::error_code error;
   if (!std::filesystem::exists(s.participant.profiles_file, error))
     section.fail("profiles_file", "no such file: " + s.participant.profiles_file);
+  s.participant.security = readSecuritySettings(section, file.directory);
   section.rejectUnknownKeys();
   return file;
 }

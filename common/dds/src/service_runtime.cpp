@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "scanfilter/dds/progress_heartbeat.hpp"
 #include "scanfilter/dds/service_cli.hpp"
 #include "scanfilter/dds/shutdown_signal.hpp"
 #include "scanfilter/dds/topic_names.hpp"
@@ -38,20 +39,27 @@ void ServiceRuntime::refreshGauges() {
 void ServiceRuntime::logStarted() const {
   std::vector<std::string> reads, writes;
   for (const auto& w : watched_) (w.endpoint == "reader" ? reads : writes).push_back(w.topic);
-  spdlog::info("started: domain {}, {} -> {}, metrics http://{}/metrics", config_.service.participant.domain_id,
-               joined(reads), joined(writes), metrics_.address());
+  const std::string started = fmt::format("started: domain {}, {} -> {}, metrics http://{}/metrics",
+                                          config_.service.participant.domain_id, joined(reads), joined(writes),
+                                          metrics_.address());
+  spdlog::info("{}", started);
+  notifier_.ready(started);
 }
 
 void ServiceRuntime::runUntilStopped(std::chrono::milliseconds period, const std::function<void()>& each_period) {
   logStarted();
   auto last_refresh = std::chrono::steady_clock::now() - kGaugePeriod;
+  ProgressHeartbeat heartbeat("the service loop");  // a stuck each_period stops the watchdog's pings
   do {
+    heartbeat.beat();
     if (each_period) each_period();
     if (std::chrono::steady_clock::now() - last_refresh >= kGaugePeriod) {
       refreshGauges();
       last_refresh = std::chrono::steady_clock::now();
     }
+    heartbeat.idle();
   } while (!ShutdownSignal::waitFor(period));
+  notifier_.stopping();
 }
 
 int runService(int argc, char** argv, const ServiceDescription& description,
@@ -63,6 +71,7 @@ int runService(int argc, char** argv, const ServiceDescription& description,
     ShutdownSignal::install();
     ServiceRuntime runtime(cli.config(), description.name);
     const int code = body(runtime);
+    runtime.notifier().stopping();
     spdlog::info("stopped");
     return code;
   });

@@ -9,6 +9,13 @@ using namespace eprosima::fastdds::dds;
 namespace {
 constexpr int kRosDefaultDepth = 10;
 constexpr double kHeartbeatPeriodS = 0.01;
+// The stage topics' writers assert liveliness automatically and promise to do
+// so within this lease; a reader sees its upstream gone (a crash, a frozen
+// process) after at most this long, instead of the participant's lease.
+constexpr double kStageLivelinessLeaseS = 1.0;
+// Fast DDS asserts AUTOMATIC liveliness every announcement period (its
+// default is never): four assertions per lease survive a lost packet or two.
+constexpr double kStageLivelinessAnnouncementS = kStageLivelinessLeaseS / 4;
 }  // namespace
 
 eprosima::fastrtps::Duration_t toDuration(double seconds) {
@@ -28,6 +35,12 @@ Qos keepAll(Qos qos, const StreamQos& q) {
   qos.resource_limits().max_instances = 1;
   qos.resource_limits().max_samples_per_instance = 2 * q.queue_depth;
   qos.durability().kind = VOLATILE_DURABILITY_QOS;
+  // AUTOMATIC with the same lease on both ends: compatible (offered lease <=
+  // requested), and any reader that requests a longer lease or none (ROS 2's
+  // default, Cyclone's) still matches the writers.
+  qos.liveliness().kind = AUTOMATIC_LIVELINESS_QOS;
+  qos.liveliness().lease_duration = toDuration(kStageLivelinessLeaseS);
+  qos.liveliness().announcement_period = toDuration(kStageLivelinessAnnouncementS);
   return qos;
 }
 

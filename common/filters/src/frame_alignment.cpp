@@ -1,5 +1,7 @@
 #include "scanfilter/frame_alignment.hpp"
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -16,6 +18,9 @@ constexpr double kConvergedShift = 1e-4;
 constexpr double kConvergedTurn = 1e-5;
 // Relative to the matches' count: far below what one constraining normal adds.
 constexpr double kRidge = 1e-6;
+// Distances here carry rounding errors of ~1e-16 m; a repeated answer is
+// trusted only this far (m) inside the distance that makes it sure.
+constexpr double kDistanceRoundingSlack = 1e-9;
 
 Eigen::Vector2d perpendicular(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
 
@@ -34,31 +39,68 @@ void FrameAligner::snapshotObstacles(const PenetrationGrid& grid, std::span<cons
   width_ = top.x - lo_.x + 1;
   height_ = top.y - lo_.y + 1;
   cells_.assign(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), kNoObstacle);
+  words_per_row_ = (width_ + kBitsPerWord - 1) / kBitsPerWord + 1;  // +1: a run may read one word past the row
+  occupied_bits_.assign(static_cast<std::size_t>(words_per_row_) * static_cast<std::size_t>(height_), 0);
   centroids_.clear();
   grid.forEachObstacleIn(lo_, top, [&](CellIndex c) {
-    cells_[static_cast<std::size_t>((c.y - lo_.y) * width_ + (c.x - lo_.x))] = static_cast<std::int32_t>(centroids_.size());
+    const int x = c.x - lo_.x, y = c.y - lo_.y;
+    cells_[static_cast<std::size_t>(y * width_ + x)] = static_cast<std::int32_t>(centroids_.size());
+    occupied_bits_[static_cast<std::size_t>(y * words_per_row_ + x / kBitsPerWord)] |= std::uint64_t{1} << (x % kBitsPerWord);
     centroids_.push_back(grid.centroid(c));
   });
 }
 
-const Eigen::Vector2d* FrameAligner::nearestObstacle(const Eigen::Vector2d& p) const {
-  const auto reach = static_cast<int>(std::ceil(params_.max_match_distance / cell_size_));
-  const auto cx = static_cast<int>(std::floor(p.x() / cell_size_)) - lo_.x;
-  const auto cy = static_cast<int>(std::floor(p.y() / cell_size_)) - lo_.y;
+std::uint64_t FrameAligner::occupiedRun(int y, int x0, int count) const {
+  // Lowest bit first.
+  const std::uint64_t* row = occupied_bits_.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(words_per_row_);
+  const int word = x0 / kBitsPerWord, shift = x0 % kBitsPerWord;
+  std::uint64_t bits = row[word] >> shift;
+  if (shift != 0) bits |= row[word + 1] << (kBitsPerWord - shift);
+  return bits & ((std::uint64_t{1} << count) - 1);
+}
+
+const Eigen::Vector2d* FrameAligner::nearestObstacle(const Eigen::Vector2d& p, double* unchanged_within) const {
+  const double max_distance = params_.max_match_distance;
+  const auto reach = static_cast<int>(std::ceil(max_distance / cell_size_));
+  const auto cell_x = static_cast<int>(std::floor(p.x() / cell_size_));
+  const auto cell_y = static_cast<int>(std::floor(p.y() / cell_size_));
+  const auto cx = cell_x - lo_.x;
+  const auto cy = cell_y - lo_.y;
   const Eigen::Vector2d* best = nullptr;
-  double best_sq = params_.max_match_distance * params_.max_match_distance;
-  for (int y = std::max(0, cy - reach); y <= std::min(height_ - 1, cy + reach); ++y) {
-    for (int x = std::max(0, cx - reach); x <= std::min(width_ - 1, cx + reach); ++x) {
-      const std::int32_t index = cells_[static_cast<std::size_t>(y * width_ + x)];
-      if (index == kNoObstacle) continue;
-      const Eigen::Vector2d& q = centroids_[static_cast<std::size_t>(index)];
-      const double d = (q - p).squaredNorm();
-      if (d <= best_sq) {
-        best_sq = d;
-        best = &q;
+  double best_sq = max_distance * max_distance;
+  // The nearest centroid but the answer (or the nearest of all when there is
+  // none), squared; a centroid outside the cells searched is at least as far
+  // as their edge.
+  double runner_up_sq = std::numeric_limits<double>::infinity();
+  const double edge = std::min({p.x() - (cell_x - reach) * cell_size_, (cell_x + reach + 1) * cell_size_ - p.x(),
+                                p.y() - (cell_y - reach) * cell_size_, (cell_y + reach + 1) * cell_size_ - p.y()});
+  const int x_lo = std::max(0, cx - reach), x_hi = std::min(width_ - 1, cx + reach);
+  for (int y = std::max(0, cy - reach); y <= std::min(height_ - 1, cy + reach) && x_lo <= x_hi; ++y) {
+    // The obstacle cells of this row in x order, as the cell-by-cell scan
+    // visited them (ties keep going to the last one seen).
+    for (int x0 = x_lo; x0 <= x_hi; x0 += kMaxRun) {
+      for (std::uint64_t bits = occupiedRun(y, x0, std::min(kMaxRun, x_hi - x0 + 1)); bits != 0; bits &= bits - 1) {
+        const int x = x0 + std::countr_zero(bits);
+        const Eigen::Vector2d& q = centroids_[static_cast<std::size_t>(cells_[static_cast<std::size_t>(y * width_ + x)])];
+        const double d = (q - p).squaredNorm();
+        if (d <= best_sq) {
+          if (best != nullptr) runner_up_sq = std::min(runner_up_sq, best_sq);
+          best_sq = d;
+          best = &q;
+        } else {
+          runner_up_sq = std::min(runner_up_sq, d);
+        }
       }
     }
   }
+  const double runner_up = std::min(std::sqrt(runner_up_sq), edge);
+  // The answer holds while no other centroid can come as near as it (both
+  // distances change by at most the move) and it stays within reach; "none"
+  // holds while every centroid stays out of reach. Strictly: a tie is never
+  // assumed away.
+  const double sure = best != nullptr ? std::min((runner_up - std::sqrt(best_sq)) / 2.0, max_distance - std::sqrt(best_sq))
+                                      : runner_up - max_distance;
+  *unchanged_within = sure - kDistanceRoundingSlack;
   return best;
 }
 
@@ -81,8 +123,13 @@ void FrameAligner::findNormals(std::span<const Eigen::Vector2d> points, const st
 int FrameAligner::matchPoints(const Eigen::Isometry2d& correction) {
   matches_.clear();
   for (std::size_t k = 0; k < with_normal_points_.size(); ++k) {
-    if (const Eigen::Vector2d* q = nearestObstacle(correction * with_normal_points_[k]))
-      matches_.push_back({with_normal_points_[k], normals_[k], *q});
+    const Eigen::Vector2d p = correction * with_normal_points_[k];
+    LastQuery& last = last_queries_[k];
+    if (!((p - last.at).norm() < last.unchanged_within)) {
+      last.nearest = nearestObstacle(p, &last.unchanged_within);
+      last.at = p;
+    }
+    if (last.nearest != nullptr) matches_.push_back({with_normal_points_[k], normals_[k], *last.nearest});
   }
   return static_cast<int>(matches_.size());
 }
@@ -123,7 +170,9 @@ double FrameAligner::rms(const Eigen::Isometry2d& correction) const {
 Eigen::Isometry2d FrameAligner::fit(const Eigen::Vector2d& origin) {
   Eigen::Isometry2d correction = Eigen::Isometry2d::Identity();
   for (int iteration = 0; iteration < params_.max_iterations; ++iteration) {
-    if (matchPoints(correction) < params_.min_matches) break;
+    // The first iteration's matches (no correction) are align's own.
+    const int matched = iteration == 0 ? static_cast<int>(matches_.size()) : matchPoints(correction);
+    if (matched < params_.min_matches) break;
     const Eigen::Isometry2d next = step(correction, origin);
     const Eigen::Isometry2d delta = next * correction.inverse();
     correction = next;
@@ -140,16 +189,19 @@ FrameAlignment FrameAligner::align(const PenetrationGrid& grid, std::span<const 
   snapshotObstacles(grid, points);
   findNormals(points, usable);
   out.candidates = static_cast<int>(with_normal_points_.size());
+  last_queries_.assign(with_normal_points_.size(), {Eigen::Vector2d::Zero(), nullptr, -1.0});
   if (width_ == 0 || out.candidates == 0) return out;
   const Eigen::Isometry2d identity = Eigen::Isometry2d::Identity();
   const int matched_as_is = matchPoints(identity);
   const double rms_as_is = rms(identity);
   Eigen::Isometry2d correction = fit(origin);
-  out.matches = matchPoints(correction);
-  out.rms = rms(correction);
+  // fit leaves the matches of no correction only when it took no step.
+  const bool moved = correction.matrix() != identity.matrix();
+  out.matches = moved ? matchPoints(correction) : matched_as_is;
+  out.rms = moved ? rms(correction) : rms_as_is;
   const bool gained = out.matches >= matched_as_is && out.rms <= rms_as_is - params_.min_rms_gain;
   if (!gained) {  // the frame fits as well where odometry put it: keep that
-    out.matches = matchPoints(identity);
+    out.matches = matched_as_is;
     out.rms = rms_as_is;
     correction = identity;
   }

@@ -195,7 +195,8 @@ void FastPenetrationFilter::prepareJudging(const Eigen::Vector2d& origin) {
   Eigen::AlignedBox2d box = returnBounds(points_);
   box.extend(origin);
   const double reach = rule_.outerHalfWidth() + positionSlack() + rule_.behindMargin() + grid_.cellSize();
-  window_.build(grid_, grid_.cellOf(box.min().array() - reach), grid_.cellOf(box.max().array() + reach));
+  window_.build(grid_, grid_.cellOf(box.min().array() - reach), grid_.cellOf(box.max().array() + reach),
+                [this](CellIndex c) { return obstaclePosition(c); });
 }
 
 bool FastPenetrationFilter::isMisdetected(const Eigen::Vector2d& r, const Eigen::Vector2d& p, double own_sq) {
@@ -205,8 +206,7 @@ bool FastPenetrationFilter::isMisdetected(const Eigen::Vector2d& r, const Eigen:
   // Penetrating cells project onto the beam between r and p + behind margin.
   const Eigen::Vector2d end = r + v * ((length + rule_.behindMargin()) / length);
   evidence_along_beam_.reset();
-  return window_.anyAlongRay(r, end, rule_.outerHalfWidth() + positionSlack(), [&](CellIndex c) {
-    const Eigen::Vector2d q = obstaclePosition(c);
+  return window_.anyAlongRay(r, end, rule_.outerHalfWidth() + positionSlack(), [&](CellIndex, const Eigen::Vector2d& q) {
     return evidence_along_beam_.add(rule_.evidence(r, p, q, own_sq), q);
   });
 }

@@ -5,9 +5,10 @@
 namespace scanfilter {
 
 const PenetrationGrid::Tile* PenetrationGrid::findTile(std::uint64_t key) const {
-  if (key == last_key_) return last_tile_;
+  if (last_valid_ && key == last_key_) return last_tile_;
   const auto it = tiles_.find(key);
   last_key_ = key;
+  last_valid_ = true;
   last_tile_ = it == tiles_.end() ? nullptr : it->second.get();
   return last_tile_;
 }
@@ -24,17 +25,25 @@ Eigen::Vector2d PenetrationGrid::centroid(CellIndex c) const {
   return tile->sums[index] / static_cast<double>(tile->counts[index]);
 }
 
-void PenetrationGrid::change(const Eigen::Vector2d& p, int delta) {
-  const CellIndex c = cellOf(p);
-  const std::uint64_t key = tileKey(c);
+PenetrationGrid::Tile& PenetrationGrid::tileForChange(std::uint64_t key, int delta) {
+  // A frame's points come in scan order: most fall in the tile of the one before.
+  if (change_tile_ != nullptr && key == change_key_) return *change_tile_;
   auto it = tiles_.find(key);
   if (it == tiles_.end()) {
     assert(delta > 0 && "removing a point that was never added");
     it = tiles_.emplace(key, std::make_unique<Tile>()).first;
     it->second->sums.fill(Eigen::Vector2d::Zero());
-    last_key_ = kNoKey;  // a lookup may have cached this key as absent
+    last_valid_ = false;  // a lookup may have cached this key as absent
   }
-  Tile& tile = *it->second;
+  change_key_ = key;
+  change_tile_ = it->second.get();
+  return *change_tile_;
+}
+
+void PenetrationGrid::change(const Eigen::Vector2d& p, int delta) {
+  const CellIndex c = cellOf(p);
+  const std::uint64_t key = tileKey(c);
+  Tile& tile = tileForChange(key, delta);
   const std::size_t index = slot(c);
   std::uint32_t& cell = tile.counts[index];
   cell = static_cast<std::uint32_t>(static_cast<std::int64_t>(cell) + delta);
@@ -45,8 +54,9 @@ void PenetrationGrid::change(const Eigen::Vector2d& p, int delta) {
   else tile.obstacles[index / 64] &= ~bit;
   tile.total = static_cast<std::uint32_t>(static_cast<std::int64_t>(tile.total) + delta);
   if (tile.total == 0) {
-    if (last_tile_ == it->second.get()) last_key_ = kNoKey;
-    tiles_.erase(it);
+    if (last_tile_ == &tile) last_valid_ = false;
+    change_tile_ = nullptr;
+    tiles_.erase(key);
   }
 }
 

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "scanfilter/input_error.hpp"
@@ -53,7 +54,7 @@ PngImage mapImage(const OccupancyGrid& grid, const CellBox& box) {
   return png;
 }
 
-void saveMap(const OccupancyGrid& grid, const std::string& base) {
+void saveMap(const OccupancyGrid& grid, const std::string& base, const std::string& note) {
   const CellBox box = grid.bounds();
   const auto width = static_cast<int>(box.width()), height = static_cast<int>(box.height());
   const std::string stem = std::filesystem::path(base).filename().string();
@@ -87,10 +88,11 @@ void saveMap(const OccupancyGrid& grid, const std::string& base) {
         const float l = grid.logOdds({x, y});
         out.write(reinterpret_cast<const char*>(&l), sizeof l);
       }
+    out << note;
   });
 }
 
-void loadMapState(OccupancyGrid& grid, const std::string& base) {
+std::string loadMapState(OccupancyGrid& grid, const std::string& base) {
   const std::string path = base + ".logodds";
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, "", "cannot open saved map state");
@@ -114,6 +116,7 @@ void loadMapState(OccupancyGrid& grid, const std::string& base) {
       if (l != 0.0f) grid.setLogOdds({x, y}, l);
     }
   grid.takeChanged();
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};  // the note
 }
 
 }  // namespace scanfilter

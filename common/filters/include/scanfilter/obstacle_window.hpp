@@ -20,23 +20,34 @@ class ObstacleWindow {
   static constexpr int kBlockBits = 3;
   static constexpr int kBlockSide = 1 << kBlockBits;
 
-  // Snapshots the grid's obstacle cells in lo..hi (inclusive).
-  void build(const PenetrationGrid& grid, CellIndex lo, CellIndex hi);
-
-  bool isObstacle(CellIndex c) const {
-    const auto x = static_cast<std::uint32_t>(c.x - lo_.x);
-    const auto y = static_cast<std::uint32_t>(c.y - lo_.y);
-    if (x >= width_ || y >= height_) return false;  // also catches c < lo (wraps)
-    return cells_[static_cast<std::size_t>(y) * width_ + x] != 0;
+  // Snapshots the grid's obstacle cells in lo..hi (inclusive), each with
+  // where its obstacle is, position(cell): looked up once a frame rather
+  // than at every beam that passes the cell.
+  template <typename Position>
+  void build(const PenetrationGrid& grid, CellIndex lo, CellIndex hi, Position&& position) {
+    cell_size_ = grid.cellSize();
+    resize(lo, hi);
+    grid.forEachObstacleIn(lo, hi, [&](CellIndex c) { mark(c, position(c)); });
   }
 
-  // Calls pred(cell) for the obstacle cells whose centre can lie within
-  // `half_width` of segment a-b (a superset: pred makes the exact test) and
-  // returns true at the first cell for which pred does.
+  bool isObstacle(CellIndex c) const { return indexOf(c) != kNoObstacle; }
+
+  // Calls pred(cell, position) for the obstacle cells whose centre can lie
+  // within `half_width` of segment a-b (a superset: pred makes the exact
+  // test) and returns true at the first cell for which pred does.
   template <typename Pred>
   bool anyAlongRay(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double half_width, Pred&& pred) const;
 
  private:
+  static constexpr std::int32_t kNoObstacle = -1;
+  void resize(CellIndex lo, CellIndex hi);
+  void mark(CellIndex c, const Eigen::Vector2d& position);
+  std::int32_t indexOf(CellIndex c) const {
+    const auto x = static_cast<std::uint32_t>(c.x - lo_.x);
+    const auto y = static_cast<std::uint32_t>(c.y - lo_.y);
+    if (x >= width_ || y >= height_) return kNoObstacle;  // also catches c < lo (wraps)
+    return cells_[static_cast<std::size_t>(y) * width_ + x];
+  }
   bool blockHasObstacle(std::int32_t bx, std::int32_t by) const {
     const auto x = static_cast<std::uint32_t>(bx - block_lo_.x);
     const auto y = static_cast<std::uint32_t>(by - block_lo_.y);
@@ -48,7 +59,8 @@ class ObstacleWindow {
   CellIndex lo_;
   std::uint32_t width_ = 0;
   std::uint32_t height_ = 0;
-  std::vector<std::uint8_t> cells_;
+  std::vector<std::int32_t> cells_;  // index into positions_, kNoObstacle for none
+  std::vector<Eigen::Vector2d> positions_;
   CellIndex block_lo_;
   std::uint32_t block_width_ = 0;
   std::uint32_t block_height_ = 0;
@@ -100,7 +112,8 @@ bool ObstacleWindow::anyAlongRay(const Eigen::Vector2d& a, const Eigen::Vector2d
       const double line = lineAt(i);
       for (std::int32_t j = first(line - band), j_hi = last(line + band); j <= j_hi; ++j) {
         const CellIndex c = cell(i, j);
-        if (isObstacle(c) && pred(c)) return true;
+        const std::int32_t index = indexOf(c);
+        if (index != kNoObstacle && pred(c, positions_[static_cast<std::size_t>(index)])) return true;
       }
     }
   }

@@ -44,7 +44,11 @@ class PenetrationGrid {
 
   void add(const Eigen::Vector2d& p) { change(p, +1); }
   void remove(const Eigen::Vector2d& p) { change(p, -1); }
-  void clear() { tiles_.clear(); last_key_ = kNoKey; last_tile_ = nullptr; }
+  void clear() {
+    tiles_.clear();
+    last_valid_ = false;
+    change_tile_ = nullptr;
+  }
 
   // Count of one cell; 0 where no tile exists.
   int count(CellIndex c) const;
@@ -85,7 +89,6 @@ class PenetrationGrid {
     std::array<Eigen::Vector2d, kTileSide * kTileSide> sums;  // of the points counted, per cell
     std::uint32_t total = 0;  // sum of counts: the tile is freed at zero
   };
-  static constexpr std::uint64_t kNoKey = ~std::uint64_t{0};
 
   static std::uint64_t tileKey(CellIndex c) {
     const auto tx = static_cast<std::uint32_t>(c.x >> kTileBits);
@@ -97,13 +100,22 @@ class PenetrationGrid {
   }
   const Tile* findTile(std::uint64_t key) const;
   void change(const Eigen::Vector2d& p, int delta);
+  // The tile holding `key`, created when a point is added to a new one.
+  Tile& tileForChange(std::uint64_t key, int delta);
 
   double cell_size_;
   int obstacle_threshold_;
   std::unordered_map<std::uint64_t, std::unique_ptr<Tile>> tiles_;
   // One-entry cache: consecutive lookups of a beam walk mostly hit one tile.
-  mutable std::uint64_t last_key_ = kNoKey;
+  // Valid only while last_valid_: every key is a possible tile (~0 is the
+  // tile at cells -32..-1 in x and y), so no key can mean "none".
+  mutable bool last_valid_ = false;
+  mutable std::uint64_t last_key_ = 0;
   mutable const Tile* last_tile_ = nullptr;
+  // The same for changes (add, remove), which may create or free the tile;
+  // valid while change_tile_ is set (every key is a possible tile, ~0 too).
+  std::uint64_t change_key_ = 0;
+  Tile* change_tile_ = nullptr;
 };
 
 }  // namespace scanfilter

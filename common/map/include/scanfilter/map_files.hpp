@@ -9,14 +9,17 @@ namespace scanfilter {
 // Writes BASE.pgm + BASE.yaml (the ROS map_server format, trinary: 0
 // occupied, 254 free, 205 unknown), BASE.png for people, and BASE.logodds
 // (the exact state, to continue from). Every file is written to a temporary
-// name and renamed, so a crash never leaves a torn file.
-void saveMap(const OccupancyGrid& grid, const std::string& base);
+// name and renamed, so a crash never leaves a torn file. `note` (text, e.g.
+// which scans the map holds) is stored in BASE.logodds after the cells: it
+// is replaced in the same rename as the state it describes.
+void saveMap(const OccupancyGrid& grid, const std::string& base, const std::string& note = {});
 
 // The map as people look at it (map_server grey levels) over `box`, which may
 // be larger than the grid's own bounds (to draw two maps on one frame).
 PngImage mapImage(const OccupancyGrid& grid, const CellBox& box);
 
-// Restores the exact state saved in BASE.logodds into `grid` (same params).
-void loadMapState(OccupancyGrid& grid, const std::string& base);
+// Restores the exact state saved in BASE.logodds into `grid` (same params);
+// returns the note saved with it ("" if none).
+std::string loadMapState(OccupancyGrid& grid, const std::string& base);
 
 }  // namespace scanfilter

@@ -7,6 +7,9 @@
 #include <fastdds/dds/topic/Topic.hpp>
 #include <fastdds/dds/topic/TypeSupport.hpp>
 
+#include "scanfilter/dds/discovery_settings.hpp"
+#include "scanfilter/dds/security_settings.hpp"
+
 namespace scanfilter::dds_io {
 
 // Where a service's participant lives and how it talks: the domain and a
@@ -16,6 +19,8 @@ struct ParticipantSettings {
   std::string profiles_file;
   std::string profile = "scanfilter_loopback";
   std::string name = "scanfilter";
+  DiscoverySettings discovery;  // service.discovery: other hosts (replaces the profile's transports)
+  SecuritySettings security;    // off unless service.security.enclave is set
 };
 
 // One DomainParticipant with one publisher and one subscriber, created from

@@ -11,13 +11,16 @@
 #include "scanfilter/dds/service_runtime.hpp"
 #include "scanfilter/dds/typed_reader.hpp"
 #include "scanfilter/dds/typed_writer.hpp"
+#include "scanfilter/dds/upstream_liveliness.hpp"
 #include "scanfilter_typesPubSubTypes.h"
 
 namespace scanfilter::dds_io {
 
 // One filtering step as a service: takes labelled scans from one topic, runs
 // the step, publishes them with the step's labels on another, and meters it
-// all. Invalid samples are counted, logged once per kind, and dropped.
+// all. Invalid samples are counted, logged once per kind, and dropped. The
+// output holds while fewer than service.required_readers read it, and
+// scanfilter_upstream_alive follows the input's writers.
 class FilterStage {
  public:
   // The step: reads the scan and its labels so far, writes the new labels.
@@ -45,6 +48,7 @@ class FilterStage {
   SensorInfo sensor_;
   std::vector<std::uint8_t> labels_before_;
   std::atomic<std::uint64_t> processed_{0};
+  UpstreamLiveliness upstream_;
   using Writer = TypedWriter<scanfilter_msgs::msg::dds_::LabeledScan_PubSubType>;
   Writer writer_;
   TypedReader<scanfilter_msgs::msg::dds_::LabeledScan_PubSubType> reader_;  // last: callbacks see a ready writer

@@ -31,6 +31,9 @@ class ServiceMetrics {
   void endToEndLatency(double seconds) { latency_.Observe(seconds); }
   void hopLatency(double seconds) { hop_.Observe(seconds); }
   void matched(const std::string& endpoint, const std::string& topic, int count);
+  // scanfilter_upstream_alive{service,topic}: 1 while a writer of the stage
+  // topic this service reads is alive (DDS liveliness), 0 otherwise.
+  void upstreamAlive(const std::string& topic, bool alive);
   // Refreshes the process CPU time and resident memory gauges.
   void updateProcessStats();
 
@@ -53,6 +56,7 @@ class ServiceMetrics {
   prometheus::Histogram& latency_;
   prometheus::Histogram& hop_;
   prometheus::Family<prometheus::Gauge>& matched_;
+  prometheus::Family<prometheus::Gauge>& upstream_alive_;
   prometheus::Gauge& cpu_seconds_;
   prometheus::Gauge& resident_bytes_;
 };

@@ -9,6 +9,7 @@
 #include "scanfilter/dds/dds_participant.hpp"
 #include "scanfilter/dds/service_config.hpp"
 #include "scanfilter/dds/service_metrics.hpp"
+#include "scanfilter/dds/systemd_notifier.hpp"
 
 namespace scanfilter::dds_io {
 
@@ -35,6 +36,7 @@ class ServiceRuntime {
   const ServiceSettings& settings() const { return config_.service; }
   ServiceMetrics& metrics() { return metrics_; }
   DdsParticipant& participant() { return participant_; }
+  const SystemdNotifier& notifier() const { return notifier_; }
   // rt/<namespace>/<name>
   std::string topic(const std::string& name) const;
 
@@ -49,7 +51,8 @@ class ServiceRuntime {
                        const std::function<void()>& each_period = {});
   // The process and matched gauges now (for services that run their own loop).
   void refreshGauges();
-  // "started: domain D, rt/a -> rt/b and rt/c, metrics http://…"
+  // "started: domain D, rt/a -> rt/b and rt/c, metrics http://…"; also
+  // tells systemd the service is ready (its endpoints exist by then).
   void logStarted() const;
 
  private:
@@ -59,6 +62,7 @@ class ServiceRuntime {
     std::function<int()> matched;
   };
 
+  SystemdNotifier notifier_;  // first: its watchdog pings while the rest starts
   const ServiceConfigFile& config_;
   ServiceMetrics metrics_;
   DdsParticipant participant_;

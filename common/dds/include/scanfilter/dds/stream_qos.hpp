@@ -9,10 +9,16 @@ eprosima::fastrtps::Duration_t toDuration(double seconds);
 
 // QoS of the scan streams between the pipeline's stages: reliable and
 // keep-all with a bounded queue, so a fast producer is slowed down by the
-// slowest consumer (write() blocks) instead of losing scans.
+// slowest consumer (write() blocks) instead of losing scans; AUTOMATIC
+// liveliness with a 1 s lease, so a reader learns within a second that its
+// upstream is gone.
 struct StreamQos {
   int queue_depth = 64;           // samples buffered per writer and reader
   double max_blocking_s = 5.0;    // how long write() waits for room before failing
+  // A filter stage holds its output (and so, by back-pressure, its input)
+  // while fewer readers than this are matched on it: samples written to no
+  // reader are lost on a volatile stream. 0: publish whatever is matched.
+  int required_readers = 0;
 };
 
 eprosima::fastdds::dds::DataWriterQos losslessWriterQos(const StreamQos& q);

@@ -11,6 +11,7 @@
 
 #include "scanfilter/dds/checked_type_support.hpp"
 #include "scanfilter/dds/dds_participant.hpp"
+#include "scanfilter/dds/progress_heartbeat.hpp"
 
 namespace scanfilter::dds_io {
 
@@ -29,13 +30,21 @@ class TypedReader : private eprosima::fastdds::dds::DataReaderListener {
  public:
   using Sample = typename PubSubType::type;
   using Callback = std::function<void(Sample&)>;
+  // Called (on a Fast DDS thread) with the number of live writers whenever a
+  // writer's liveliness changes: one appeared, or its lease ran out.
+  using LivelinessCallback = std::function<void(int alive_writers)>;
 
   TypedReader(DdsParticipant& participant, const std::string& topic_name,
-              const eprosima::fastdds::dds::DataReaderQos& qos, Callback callback)
-      : participant_(participant), callback_(std::move(callback)) {
+              const eprosima::fastdds::dds::DataReaderQos& qos, Callback callback,
+              LivelinessCallback on_liveliness = {})
+      : participant_(participant),
+        callback_(std::move(callback)),
+        on_liveliness_(std::move(on_liveliness)),
+        heartbeat_("the reader of " + topic_name) {
     auto* topic = participant.topic(topic_name, eprosima::fastdds::dds::TypeSupport(new CheckedPubSubType<PubSubType>()));
-    reader_ = participant.subscriber()->create_datareader(topic, qos, this,
-                                                          eprosima::fastdds::dds::StatusMask::subscription_matched());
+    auto mask = eprosima::fastdds::dds::StatusMask::subscription_matched();
+    if (on_liveliness_) mask << eprosima::fastdds::dds::StatusMask::liveliness_changed();
+    reader_ = participant.subscriber()->create_datareader(topic, qos, this, mask);
     if (reader_ == nullptr) throw std::runtime_error("cannot create a reader on " + topic_name);
     worker_ = std::thread([this] { takeLoop(); });
   }
@@ -56,9 +65,11 @@ class TypedReader : private eprosima::fastdds::dds::DataReaderListener {
   void takeLoop() {
     eprosima::fastdds::dds::SampleInfo info;
     while (!stop_) {
+      heartbeat_.beat();  // the systemd watchdog pings only while this is recent
       if (!reader_->wait_for_unread_message({0, kPollNanoseconds})) continue;
       while (!stop_ && reader_->take_next_sample(&sample_, &info) == eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK) {
         if (info.valid_data) callback_(sample_);
+        heartbeat_.beat();
       }
     }
   }
@@ -66,13 +77,19 @@ class TypedReader : private eprosima::fastdds::dds::DataReaderListener {
                                const eprosima::fastdds::dds::SubscriptionMatchedStatus& status) override {
     matched_ = status.current_count;
   }
+  void on_liveliness_changed(eprosima::fastdds::dds::DataReader*,
+                             const eprosima::fastdds::dds::LivelinessChangedStatus& status) override {
+    if (on_liveliness_) on_liveliness_(status.alive_count);
+  }
 
   DdsParticipant& participant_;
   Callback callback_;
+  LivelinessCallback on_liveliness_;
   eprosima::fastdds::dds::DataReader* reader_ = nullptr;
   Sample sample_;  // reused: no allocation per scan once sizes settle
   std::atomic<int> matched_{0};
   std::atomic<bool> stop_{false};
+  ProgressHeartbeat heartbeat_;
   std::thread worker_;
 };
 

@@ -1,7 +1,12 @@
 #pragma once
 #include <atomic>
+#include <chrono>
+#include <functional>
 #include <stdexcept>
 #include <string>
+#include <thread>
+
+#include <spdlog/spdlog.h>
 
 #include <fastdds/dds/publisher/DataWriter.hpp>
 #include <fastdds/dds/publisher/DataWriterListener.hpp>
@@ -26,7 +31,7 @@ class TypedWriter : private eprosima::fastdds::dds::DataWriterListener {
 
   TypedWriter(DdsParticipant& participant, const std::string& topic_name,
               const eprosima::fastdds::dds::DataWriterQos& qos)
-      : participant_(participant) {
+      : participant_(participant), topic_(topic_name) {
     auto* topic = participant.topic(topic_name, eprosima::fastdds::dds::TypeSupport(new CheckedPubSubType<PubSubType>()));
     writer_ = participant.publisher()->create_datawriter(topic, qos, this);
     if (writer_ == nullptr) throw std::runtime_error("cannot create a writer on " + topic_name);
@@ -44,6 +49,19 @@ class TypedWriter : private eprosima::fastdds::dds::DataWriterListener {
     max_wait_s_ = max_wait_s;
   }
 
+  // Lossless streams whose readers must be there (a volatile sample written
+  // while they are not is lost for them): send() holds, logging once when it
+  // starts and once when it resumes, while fewer than `required_readers` are
+  // matched, and a flow-control wait that times out keeps holding instead of
+  // giving up, until the readers acknowledge or discovery drops the silent
+  // one (a crashed process: its participant's lease) and a new one matches.
+  // Memory stays bounded by the keep-all history and the window. `stop`
+  // (e.g. a shutdown request) ends a hold.
+  void holdForReaders(int required_readers, std::function<bool()> stop) {
+    required_readers_ = required_readers;
+    stop_ = std::move(stop);
+  }
+
   enum class Outcome {
     kSent,
     // Sent, but (with flow control) some reader did not acknowledge the
@@ -53,12 +71,13 @@ class TypedWriter : private eprosima::fastdds::dds::DataWriterListener {
   };
 
   Outcome send(Sample& sample) {
+    if (stop_ && !waitForRequiredReaders()) return Outcome::kRefused;
     const auto rc = writer_->write(&sample, eprosima::fastrtps::rtps::InstanceHandle_t());
     last_error_ = rc();
     if (rc != eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK) return Outcome::kRefused;
     if (window_ > 0 && ++unacknowledged_ >= window_) {
       unacknowledged_ = 0;
-      if (!waitForAcknowledgments(max_wait_s_)) {
+      if (!waitForAcknowledgments(max_wait_s_) && !(stop_ && holdUntilAcknowledged())) {
         last_error_ = eprosima::fastrtps::types::ReturnCode_t::RETCODE_TIMEOUT;
         return Outcome::kSentUnacknowledged;
       }
@@ -78,15 +97,57 @@ class TypedWriter : private eprosima::fastdds::dds::DataWriterListener {
   // The Fast DDS return code of the last failed write (for the log).
   int lastError() const { return last_error_; }
   int matchedReaders() const { return matched_.load(); }
+  // Seconds send() has spent holding so far (a paced source shifts its clock by them).
+  double heldSeconds() const { return held_s_.load(); }
 
  private:
+  static constexpr auto kHoldPoll = std::chrono::milliseconds(20);
+
+  // Until `required_readers_` are matched and discovery settled; false if stopped first.
+  bool waitForRequiredReaders() {
+    if (matched_.load() >= required_readers_) return true;
+    const auto start = std::chrono::steady_clock::now();
+    spdlog::warn("holding {}: {} of {} required reader(s) matched; waiting for them", topic_, matched_.load(),
+                 required_readers_);
+    while (matched_.load() < required_readers_) {
+      if (stop_()) return false;
+      std::this_thread::sleep_for(kHoldPoll);
+    }
+    std::this_thread::sleep_for(kDiscoverySettle);  // the reader must match us too before a volatile sample
+    resumed(start);
+    return !stop_();
+  }
+
+  // After a flow-control wait timed out: until every matched reader
+  // acknowledged (a dead one stops counting once discovery drops it); false if stopped first.
+  bool holdUntilAcknowledged() {
+    const auto start = std::chrono::steady_clock::now();
+    spdlog::warn("holding {}: a reader has not acknowledged for {} s (crashed or stalled?); waiting for it, or for "
+                 "discovery to drop it and a replacement to match", topic_, max_wait_s_);
+    while (!waitForAcknowledgments(std::chrono::duration<double>(kHoldPoll).count())) {
+      if (stop_()) return false;
+    }
+    resumed(start);
+    return true;
+  }
+
+  void resumed(std::chrono::steady_clock::time_point since) {
+    const double held = std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+    held_s_ = held_s_.load() + held;
+    spdlog::info("resumed {} after holding {:.1f} s ({} reader(s) matched)", topic_, held, matched_.load());
+  }
+
   void on_publication_matched(eprosima::fastdds::dds::DataWriter*,
                               const eprosima::fastdds::dds::PublicationMatchedStatus& status) override {
     matched_ = status.current_count;
   }
 
   DdsParticipant& participant_;
+  std::string topic_;
   eprosima::fastdds::dds::DataWriter* writer_ = nullptr;
+  int required_readers_ = 0;
+  std::function<bool()> stop_;  // set: send() holds (holdForReaders)
+  std::atomic<double> held_s_{0.0};
   std::atomic<int> matched_{0};
   int last_error_ = 0;
   int window_ = 0;  // 0: no flow control
