@@ -50,6 +50,8 @@ void toLaserScan(const Scan& scan, const SensorInfo& sensor, bool upside_down, c
 
 int main(int argc, char** argv) {
   CLI::App app{"ros_scan_publisher: publish a scan log as LaserScan (rt/<ns>/scan) and Odometry (rt/<ns>/odom)"};
+  // Bad arguments: one line (what and which), no usage dump.
+  app.failure_message([](const CLI::App*, const CLI::Error& e) { return std::string(e.what()) + " (see --help)\n"; });
   ParticipantSettings settings;
   settings.profiles_file = defaultProfilesFile();
   settings.name = "scanfilter_ros_scan_publisher";

@@ -24,6 +24,8 @@ using namespace scanfilter::dds_io;
 
 int main(int argc, char** argv) {
   CLI::App app{"scan_recorder: record rt/<ns>/labeled_scan (or another LabeledScan topic) to a scan log"};
+  // Bad arguments: one line (what and which), no usage dump.
+  app.failure_message([](const CLI::App*, const CLI::Error& e) { return std::string(e.what()) + " (see --help)\n"; });
   ParticipantSettings participant_settings;
   participant_settings.profiles_file = defaultProfilesFile();
   participant_settings.name = "scanfilter_scan_recorder";

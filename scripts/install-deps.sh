@@ -20,6 +20,8 @@ PACKAGES=(
   libsystemd-dev systemd dpkg-dev adduser python3 strace
   # DDS Security keystores (deploy/security/make-keystore.sh, tests/security/)
   openssl
+  # fuzzing (scripts/fuzz.sh: libFuzzer, ASan, UBSan)
+  clang libclang-rt-14-dev
 )
 
 missing=()

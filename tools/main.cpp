@@ -13,6 +13,8 @@ using namespace scanfilter::cli;
 
 int main(int argc, char** argv) {
   CLI::App app{"scanfilter: two-step filter for indoor 2D LiDAR scans (jump points, misdetected points)"};
+  // Bad arguments: one line (what and which), no usage dump.
+  app.failure_message([](const CLI::App*, const CLI::Error& e) { return std::string(e.what()) + " (see --help)\n"; });
   app.set_version_flag("--version", std::string("scanfilter ") + SCANFILTER_VERSION);
   app.require_subcommand(1);
   std::string log_level = "warn";

@@ -146,8 +146,9 @@ int runReportReal(const ReportRealOptions& options) {
   std::ostringstream maps;
   maps << "\n| log | occupied cells unfiltered | filtered | picture |\n|---|---|---|---|\n";
   for (const auto& path : options.logs) {
-    std::cerr << "report-real: " << path << "\n";
+    // Progress once the log has read: a bad file gets its one error line only.
     const RecordedLog log = readLog(path, options.carmen_range_max);
+    std::cerr << "report-real: " << path << " (" << log.scans.size() << " scans)\n";
     const std::string stem = std::filesystem::path(log.name).stem().stem().string();
     const bool odometry_only = log.source.starts_with(MinesLogReader::kSourcePrefix);
     const std::string poses = odometry_only ? "wheel odometry" : "as logged";

@@ -11,6 +11,7 @@
 #include "map_metrics.hpp"
 #include "map_message.hpp"
 #include "map_progress.hpp"
+#include "publish_settings.hpp"
 #include "scanfilter/dds/scan_message.hpp"
 #include "scanfilter/dds/service_runtime.hpp"
 #include "scanfilter/dds/stream_qos.hpp"
@@ -20,36 +21,14 @@
 #include "scanfilter/dds/upstream_liveliness.hpp"
 #include "scanfilter/map_config.hpp"
 #include "scanfilter/map_files.hpp"
-#include "scanfilter/yaml_section.hpp"
 #include "scanfilter_typesPubSubTypes.h"
 
 using namespace scanfilter;
 using namespace scanfilter::dds_io;
+using scanfilter::map_service::PublishSettings;
+using scanfilter::map_service::readPublishSettings;
 
 namespace {
-
-struct PublishSettings {
-  double rate_hz = 1.0;
-  std::string frame_id = "map";
-  std::string save_path;
-  double save_period_s = 30.0;
-  bool load_on_start = false;
-};
-
-PublishSettings readPublishSettings(const ServiceConfigFile& config) {
-  PublishSettings s;
-  YamlSection section(config.root, "publishing", config.path);
-  section.read("rate_hz", s.rate_hz);
-  section.read("frame_id", s.frame_id);
-  section.read("save_path", s.save_path);
-  section.read("save_period_s", s.save_period_s);
-  section.read("load_on_start", s.load_on_start);
-  section.requireRange("rate_hz", s.rate_hz, 0.01, 100, "0.01-100 (Hz)");
-  section.requireRange("save_period_s", s.save_period_s, 0.1, 1e6, "a value >= 0.1 (s)");
-  section.rejectUnknownKeys();
-  s.save_path = config.resolvePath(s.save_path);
-  return s;
-}
 
 eprosima::fastdds::dds::DataWriterQos latchedMapQos() {
   auto qos = rosDefaultWriterQos();

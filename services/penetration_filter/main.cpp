@@ -7,6 +7,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "laser_scan_settings.hpp"
 #include "scanfilter/dds/filter_stage.hpp"
 #include "scanfilter/dds/per_sensor_filter.hpp"
 #include "scanfilter/dds/service_runtime.hpp"
@@ -14,31 +15,9 @@
 #include "scanfilter/dds/topic_names.hpp"
 #include "scanfilter/filter_config.hpp"
 #include "scanfilter/penetration_filter.hpp"
-#include "scanfilter/yaml_section.hpp"
 
 using namespace scanfilter;
 using namespace scanfilter::dds_io;
-
-namespace {
-
-// rt/<ns>/scan_filtered: the frame for scans from a log, and what a removed beam becomes.
-struct LaserScanSettings {
-  std::string frame_id = "laser";
-  RemovedBeamValue removed = RemovedBeamValue::kNaN;
-};
-
-LaserScanSettings readLaserScanSettings(const ServiceConfigFile& config) {
-  LaserScanSettings s;
-  YamlSection section(config.root, "laser_scan", config.path);
-  section.read("frame_id", s.frame_id);
-  std::string removed_beams = "nan";
-  section.readChoice("removed_beams", removed_beams, {"nan", "inf"});
-  s.removed = removed_beams == "nan" ? RemovedBeamValue::kNaN : RemovedBeamValue::kInfinity;
-  section.rejectUnknownKeys();
-  return s;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   const ServiceDescription description{

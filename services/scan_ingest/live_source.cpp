@@ -27,36 +27,19 @@ LiveSource::LiveSource(dds_io::DdsParticipant& participant, const std::string& n
                    [this](dds_io::LaserScanMsg& msg) { onScan(msg); }) {}
 
 void LiveSource::onOdometry(dds_io::OdometryMsg& msg) {
+  if (const auto reason = dds_io::odometryRejectionReason(msg)) {
+    metrics_.sampleRejected(*reason);
+    return;
+  }
   const auto& p = msg.pose().pose();
-  if (!std::isfinite(p.position().x()) || !std::isfinite(p.position().y())) {
-    metrics_.sampleRejected("nan_pose");
-    return;
-  }
   std::lock_guard lock(mutex_);
-  if (!dds_io::isValidTime(msg.header().stamp())) {
-    metrics_.sampleRejected("bad_stamp");
-    return;
-  }
   poses_.add(dds_io::toStamp(msg.header().stamp()), {p.position().x(), p.position().y(), dds_io::yawOf(p.orientation())});
 }
 
 void LiveSource::onScan(dds_io::LaserScanMsg& msg) {
   metrics_.scanReceived();
-  const std::size_t n = msg.ranges().size();
-  if (n == 0 || n > dds_io::kMaxBeamsOnWire) {
-    metrics_.sampleRejected(n == 0 ? "empty" : "too_many_beams");
-    return;
-  }
-  if (!msg.intensities().empty() && msg.intensities().size() != n) {
-    metrics_.sampleRejected("length_mismatch");
-    return;
-  }
-  if (!(msg.angle_increment() != 0.0f) || !std::isfinite(msg.angle_increment())) {
-    metrics_.sampleRejected("zero_increment");
-    return;
-  }
-  if (!dds_io::isValidTime(msg.header().stamp())) {
-    metrics_.sampleRejected("bad_stamp");
+  if (const auto reason = dds_io::laserScanRejectionReason(msg)) {
+    metrics_.sampleRejected(*reason);
     return;
   }
   Pending pending;

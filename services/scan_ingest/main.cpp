@@ -6,6 +6,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "ingest_settings.hpp"
 #include "live_source.hpp"
 #include "scan_player.hpp"
 #include "scanfilter/dds/service_runtime.hpp"
@@ -18,62 +19,10 @@
 
 using namespace scanfilter;
 using namespace scanfilter::dds_io;
+using scanfilter::ingest::IngestSettings;
+using scanfilter::ingest::readIngestSettings;
 
 namespace {
-
-struct IngestSettings {
-  std::string kind = "simulator";
-  std::string path;
-  std::string scene = "hall";
-  std::uint64_t seed = 1;
-  double carmen_range_max = 80.0;
-  ingest::PlaybackRate rate;
-  ingest::LiveSettings live;
-  int wait_for_subscribers = 1;
-  double wait_timeout_s = 30.0;
-  bool exit_at_end = true;
-  std::string progress_path;
-};
-
-IngestSettings readIngestSettings(const ServiceConfigFile& config) {
-  IngestSettings s;
-  YamlSection source(config.root, "source", config.path);
-  source.readChoice("kind", s.kind, {"log", "simulator", "live"});
-  source.read("path", s.path);
-  source.read("scene", s.scene);
-  source.read("seed", s.seed);
-  source.read("carmen_range_max", s.carmen_range_max);
-  std::string rate = "recorded";
-  source.read("rate", rate);
-  if (!ingest::parsePlaybackRate(rate, s.rate))
-    source.fail("rate", "expected recorded, max or a speed factor > 0, got \"" + rate + "\"");
-  if (s.kind == "log" && s.path.empty()) source.fail("path", "a log source needs a path");
-  s.path = config.resolvePath(s.path);
-  source.rejectUnknownKeys();
-  YamlSection live(config.root, "live", config.path);
-  live.read("scan_topic", s.live.scan_topic);
-  live.read("odom_topic", s.live.odom_topic);
-  std::vector<double> mount = {0.0, 0.0, 0.0};
-  live.read("mount", mount);
-  if (mount.size() != 3) live.fail("mount", "expected [x, y, yaw]");
-  s.live.mount.pose = {mount[0], mount[1], mount[2]};
-  live.read("upside_down", s.live.mount.upside_down);
-  live.read("max_pose_gap_s", s.live.max_pose_gap_s);
-  live.read("max_pose_wait_s", s.live.max_pose_wait_s);
-  live.read("reliable", s.live.reliable);
-  live.requireRange("max_pose_gap_s", s.live.max_pose_gap_s, 1e-4, 60, "0.0001-60 (s)");
-  live.requireRange("max_pose_wait_s", s.live.max_pose_wait_s, 0, 60, "0-60 (s)");
-  live.rejectUnknownKeys();
-  YamlSection playback(config.root, "playback", config.path);
-  playback.read("wait_for_subscribers", s.wait_for_subscribers);
-  playback.read("wait_timeout_s", s.wait_timeout_s);
-  playback.read("exit_at_end", s.exit_at_end);
-  playback.read("progress_path", s.progress_path);
-  if (!s.progress_path.empty()) s.progress_path = config.resolvePath(s.progress_path);
-  playback.requireRange("wait_for_subscribers", s.wait_for_subscribers, 0, 1000, "an integer 0-1000");
-  playback.rejectUnknownKeys();
-  return s;
-}
 
 std::unique_ptr<ScanSource> openSource(const IngestSettings& s) {
   if (s.kind == "log") return openScanSource(s.path, {.carmen_range_max = s.carmen_range_max});

@@ -1,5 +1,9 @@
 #include "scanfilter/yaml_section.hpp"
 
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -55,7 +59,7 @@ void YamlSection::readChoice(const char* key, std::string& value, const std::set
 void YamlSection::rejectUnknownKeys() const {
   if (!node_) return;
   for (const auto& entry : node_) {
-    const auto key = entry.first.as<std::string>();
+    const std::string key = keyText(entry.first, file_);
     if (!used_.count(key)) throw InputError(file_, lineOf(entry.first), path_ + "." + key, "unknown key");
   }
 }
@@ -63,6 +67,11 @@ void YamlSection::rejectUnknownKeys() const {
 void YamlSection::fail(const char* key, const std::string& problem) const {
   const YAML::Node at = node_ ? node_[key] : YAML::Node(YAML::NodeType::Undefined);
   throw InputError(file_, at ? lineOf(at) : lineOf(node_), path_ + "." + key, problem);
+}
+
+std::string keyText(const YAML::Node& key, const std::string& file) {
+  if (!key.IsScalar()) throw InputError(file, lineOf(key), "", "expected a plain key, got a list or mapping");
+  return key.Scalar();
 }
 
 YAML::Node parseYaml(const std::string& text, const std::string& file) {
@@ -73,12 +82,31 @@ YAML::Node parseYaml(const std::string& text, const std::string& file) {
   }
 }
 
+std::string readConfigText(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) throw InputError(path, 0, "", "is a directory, expected a YAML file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, "", std::string("cannot open: ") + std::strerror(errno));
+  std::string text;
+  constexpr std::size_t kChunk = 64 * 1024;
+  char chunk[kChunk];
+  while (in.read(chunk, kChunk) || in.gcount() > 0) {
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxConfigBytes) {
+      const auto line = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
+      throw InputError(path, line, "", "file larger than " + std::to_string(kMaxConfigBytes >> 20) + " MiB; not a config file");
+    }
+  }
+  if (in.bad()) throw InputError(path, 0, "", "read error");
+  return text;
+}
+
 YAML::Node loadYamlFile(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, 0, "", "cannot open file");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parseYaml(text.str(), path);
+  YAML::Node root = parseYaml(readConfigText(path), path);
+  // Nothing but blanks and comments: most likely a file cut short or the
+  // wrong file, never a config meaning "all defaults".
+  if (!root || root.IsNull()) throw InputError(path, 0, "", "empty file: expected a YAML mapping");
+  return root;
 }
 
 }  // namespace scanfilter

@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 
+#include "scanfilter/plausible_bounds.hpp"
 #include "scanfilter/point_code.hpp"
 
 namespace scanfilter::dds_io {
@@ -12,6 +13,10 @@ namespace scanfilter::dds_io {
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kNanosPerSecond = 1e9;
+// Δθ the filter config accepts (config/filter.yaml): the obstacle threshold
+// is scaled by it, and a Δθ of 1e-300 would scale it beyond an int.
+constexpr double kMinAngularAccuracyDeg = 1e-6;
+constexpr double kMaxAngularAccuracyDeg = 90.0;
 
 // "No return" exactly as the scan log reader decides it: NaN, ±inf, 0 and
 // values outside the sensor's limits.
@@ -83,11 +88,41 @@ std::optional<std::string> rejectionReason(const LabeledScanMsg& msg) {
   if (!std::isfinite(msg.pose_x()) || !std::isfinite(msg.pose_y()) || !std::isfinite(msg.pose_theta()) ||
       !std::isfinite(msg.mount_x()) || !std::isfinite(msg.mount_y()) || !std::isfinite(msg.mount_yaw()))
     return "nan_pose";
+  if (!isPlausibleCoordinate(msg.pose_x()) || !isPlausibleCoordinate(msg.pose_y()) ||
+      !isPlausibleCoordinate(msg.mount_x()) || !isPlausibleCoordinate(msg.mount_y()))
+    return "implausible_pose";
   if (!(msg.angle_increment() != 0.0) || !std::isfinite(msg.angle_increment()) || !std::isfinite(msg.angle_min()))
     return "zero_increment";
-  if (!(msg.range_max() > msg.range_min()) || !(msg.angular_accuracy_deg() > 0.0)) return "bad_sensor";
+  if (!(msg.range_max() > msg.range_min()) || !(msg.angular_accuracy_deg() >= kMinAngularAccuracyDeg) ||
+      !(msg.range_min() >= 0.0) ||
+      !(msg.range_max() <= kMaxPlausibleRange) || !(msg.angular_accuracy_deg() <= kMaxAngularAccuracyDeg))
+    return "bad_sensor";
   for (auto code : msg.labels())
     if (!isValidPointCode(code)) return "bad_label";
+  return std::nullopt;
+}
+
+std::optional<std::string> laserScanRejectionReason(const LaserScanMsg& msg) {
+  const std::size_t n = msg.ranges().size();
+  if (n == 0) return "empty";
+  if (n > kMaxBeamsOnWire) return "too_many_beams";
+  if (!msg.intensities().empty() && msg.intensities().size() != n) return "length_mismatch";
+  if (!(msg.angle_increment() != 0.0f) || !std::isfinite(msg.angle_increment()) || !std::isfinite(msg.angle_min()))
+    return "zero_increment";
+  // The filter's d_min/d_max come from these: they must name a range.
+  if (!(msg.range_min() >= 0.0f) || !(msg.range_max() > msg.range_min()) || !(msg.range_max() <= kMaxPlausibleRange))
+    return "bad_sensor";
+  if (!isValidTime(msg.header().stamp())) return "bad_stamp";
+  return std::nullopt;
+}
+
+std::optional<std::string> odometryRejectionReason(const OdometryMsg& msg) {
+  const auto& p = msg.pose().pose();
+  const auto& q = p.orientation();
+  if (!std::isfinite(p.position().x()) || !std::isfinite(p.position().y()) || !std::isfinite(yawOf(q)))
+    return "nan_pose";
+  if (!isPlausibleCoordinate(p.position().x()) || !isPlausibleCoordinate(p.position().y())) return "implausible_pose";
+  if (!isValidTime(msg.header().stamp())) return "bad_stamp";
   return std::nullopt;
 }
 

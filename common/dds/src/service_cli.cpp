@@ -34,6 +34,8 @@ ServiceCli::ServiceCli(std::string name, std::string description, std::string de
 
 std::optional<int> ServiceCli::parse(int argc, char** argv) {
   CLI::App app{description_, name_};
+  // Bad arguments: one line (what and which), no usage dump.
+  app.failure_message([](const CLI::App*, const CLI::Error& e) { return std::string(e.what()) + " (see --help)\n"; });
   app.set_version_flag("--version", name_ + " (scanfilter " + scanfilterVersion() + ")");
   std::string config_path = defaultConfigDir() + "/" + name_ + ".yaml";
   std::string log_level;

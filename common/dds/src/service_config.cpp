@@ -24,7 +24,7 @@ ServiceConfigFile loadServiceConfig(const std::string& path, const std::string& 
   file.root = loadYamlFile(path);
   if (!file.root.IsMap()) throw InputError(path, 1, "", "expected a mapping at the top level");
   for (const auto& entry : file.root) {
-    const auto key = entry.first.as<std::string>();
+    const auto key = keyText(entry.first, path);
     if (key != "service" && !own_sections.count(key))
       throw InputError(path, static_cast<std::size_t>(entry.first.Mark().line) + 1, key, "unknown section");
   }
@@ -51,7 +51,10 @@ ServiceConfigFile loadServiceConfig(const std::string& path, const std::string& 
     section.fail("namespace", "expected a ROS name without spaces or leading/trailing '/', got \"" + s.topic_namespace + "\"");
   if (s.metrics_address.find(':') == std::string::npos)
     section.fail("metrics_address", "expected host:port, got \"" + s.metrics_address + "\"");
-  if (!std::filesystem::exists(s.participant.profiles_file))
+  // The error_code form: a name too long for the file system is "no such
+  // file" too, not a filesystem_error (found by penetration_filter_config_fuzz).
+  std::error_code error;
+  if (!std::filesystem::exists(s.participant.profiles_file, error))
     section.fail("profiles_file", "no such file: " + s.participant.profiles_file);
   s.participant.security = readSecuritySettings(section, file.directory);
   section.rejectUnknownKeys();

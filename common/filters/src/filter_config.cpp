@@ -126,7 +126,7 @@ FilterConfig filterConfigFromYaml(const YAML::Node& root, const std::string& nam
   if (!root || root.IsNull()) return config;
   if (!root.IsMap()) throw InputError(name, 1, "", "expected a mapping at the top level");
   for (const auto& entry : root) {
-    const auto key = entry.first.as<std::string>();
+    const auto key = keyText(entry.first, name);
     if (key != "jump_filter" && key != "penetration_filter")
       throw InputError(name, static_cast<std::size_t>(entry.first.Mark().line) + 1, key,
                        "unknown section; expected jump_filter or penetration_filter");

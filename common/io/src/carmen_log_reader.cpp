@@ -9,6 +9,7 @@
 #include <spdlog/spdlog.h>
 
 #include "scanfilter/input_error.hpp"
+#include "scanfilter/plausible_bounds.hpp"
 
 namespace scanfilter {
 
@@ -23,6 +24,14 @@ constexpr std::size_t kFlaserTrailingFields = 9;
 // tv rv forward_safety_dist side_safety_dist, ipc_timestamp ipc_hostname logger_timestamp.
 constexpr std::size_t kRobotLaserTrailingFields = 13;
 constexpr std::size_t kRobotLaserHeadFields = 9;  // name .. num_readings
+constexpr double kMinResolution = 1e-8;                   // rad
+constexpr double kMaxResolution = std::numbers::pi / 2;  // rad: 90 degrees
+
+// A count read from a line: a whole number from 0 up to the fields the line
+// has (a larger one cannot be right, and converting it could overflow).
+bool isCountWithin(double value, std::size_t fields) {
+  return value >= 0.0 && value == std::floor(value) && value <= static_cast<double>(fields);
+}
 
 bool isScanLine(const std::string& line) {
   return line.rfind("FLASER ", 0) == 0 || line.rfind("ROBOTLASER1 ", 0) == 0;
@@ -100,9 +109,16 @@ void CarmenLogReader::setRanges(const std::vector<std::string>& tokens, std::siz
   }
 }
 
+void CarmenLogReader::checkPlausiblePose(const Pose2& pose) const {
+  if (!isPlausibleCoordinate(pose.x) || !isPlausibleCoordinate(pose.y))
+    fail("x/y", "pose more than " + std::to_string(static_cast<long>(kMaxPlausibleCoordinate)) +
+                    " m from the origin; corrupt data");
+}
+
 void CarmenLogReader::parseFlaser(const std::vector<std::string>& tokens, Scan& scan) const {
   const double n_value = number(tokens, 1, "num_readings");
-  if (n_value < 1.0 || n_value != std::floor(n_value)) fail("num_readings", "expected a positive integer");
+  if (n_value < 1.0 || !isCountWithin(n_value, tokens.size()))
+    fail("num_readings", "expected a positive integer up to the line's field count, got \"" + tokens[1] + "\"");
   const auto n = static_cast<std::size_t>(n_value);
   if (tokens.size() != 2 + n + kFlaserTrailingFields)
     fail("FLASER", "has " + std::to_string(tokens.size()) + " fields; " + std::to_string(n) +
@@ -110,6 +126,7 @@ void CarmenLogReader::parseFlaser(const std::vector<std::string>& tokens, Scan& 
   setRanges(tokens, 2, n, scan);
   const std::size_t pose = 2 + n;
   scan.pose = {number(tokens, pose, "x"), number(tokens, pose + 1, "y"), number(tokens, pose + 2, "theta")};
+  checkPlausiblePose(scan.pose);
   scan.stamp = stamp(tokens, pose + 6);
   const double steps = n % 2 == 1 && n > 1 ? static_cast<double>(n - 1) : static_cast<double>(n);
   scan.angle_min = -kFlaserFieldOfView / 2.0;
@@ -119,9 +136,12 @@ void CarmenLogReader::parseFlaser(const std::vector<std::string>& tokens, Scan& 
 void CarmenLogReader::parseRobotLaser(const std::vector<std::string>& tokens, Scan& scan) const {
   const double start_angle = number(tokens, 2, "start_angle");
   const double resolution = number(tokens, 4, "angular_resolution");
-  if (resolution == 0.0) fail("angular_resolution", "is 0; expected a non-zero step");
+  // Δθ defaults to this step; the filter accepts 0 < Δθ <= 90 degrees.
+  if (!(std::abs(resolution) >= kMinResolution && std::abs(resolution) <= kMaxResolution))
+    fail("angular_resolution", "expected a step of 1e-8 to pi/2 rad, got \"" + tokens[4] + "\"");
   const double n_value = number(tokens, 8, "num_readings");
-  if (n_value < 1.0 || n_value != std::floor(n_value)) fail("num_readings", "expected a positive integer");
+  if (n_value < 1.0 || !isCountWithin(n_value, tokens.size()))
+    fail("num_readings", "expected a positive integer up to the line's field count, got \"" + tokens[8] + "\"");
   const auto n = static_cast<std::size_t>(n_value);
   std::size_t after = kRobotLaserHeadFields + n;
   if (tokens.size() < after + kRobotLaserTrailingFields)
@@ -130,7 +150,10 @@ void CarmenLogReader::parseRobotLaser(const std::vector<std::string>& tokens, Sc
   setRanges(tokens, kRobotLaserHeadFields, n, scan);
   // Some CARMEN versions insert num_remissions [remissions] after the ranges.
   if (tokens.size() > after + kRobotLaserTrailingFields) {
-    const auto remissions = static_cast<std::size_t>(number(tokens, after, "num_remissions"));
+    const double remissions_value = number(tokens, after, "num_remissions");
+    if (!isCountWithin(remissions_value, tokens.size()))
+      fail("num_remissions", "expected an integer >= 0 up to the line's field count, got \"" + tokens[after] + "\"");
+    const auto remissions = static_cast<std::size_t>(remissions_value);
     after += 1 + remissions;
     if (tokens.size() != after + kRobotLaserTrailingFields)
       fail("ROBOTLASER1", "field count does not match num_readings and num_remissions");
@@ -138,6 +161,7 @@ void CarmenLogReader::parseRobotLaser(const std::vector<std::string>& tokens, Sc
   // The laser pose is given directly, so it is the pose and the mount is zero.
   scan.pose = {number(tokens, after, "laser_pose_x"), number(tokens, after + 1, "laser_pose_y"),
                number(tokens, after + 2, "laser_pose_theta")};
+  checkPlausiblePose(scan.pose);
   scan.stamp = stamp(tokens, after + 10);
   scan.angle_min = start_angle;
   scan.angle_increment = resolution;

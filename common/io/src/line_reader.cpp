@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <sstream>
 
 #include <zlib.h>
@@ -15,6 +16,8 @@ constexpr int kChunkBytes = 64 * 1024;
 }
 
 LineReader::LineReader(const std::string& path) : path_(path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) throw InputError(path, 0, "", "is a directory, expected a file");
   file_ = gzopen(path.c_str(), "rb");
   if (file_ == nullptr)
     throw InputError(path, 0, "", std::string("cannot open: ") + std::strerror(errno));
@@ -32,6 +35,9 @@ bool LineReader::next(std::string& line) {
     got_any = true;
     line.append(chunk);
     if (!line.empty() && line.back() == '\n') break;
+    if (line.size() > kMaxLineBytes)
+      throw InputError(path_, line_number_ + 1, "",
+                       "line longer than " + std::to_string(kMaxLineBytes >> 20) + " MiB; not a log line");
   }
   if (!got_any) {
     int err = Z_OK;

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "scanfilter/input_error.hpp"
+#include "scanfilter/plausible_bounds.hpp"
 
 namespace scanfilter {
 
@@ -18,6 +19,8 @@ constexpr std::size_t kLeftTicksField = 2;
 constexpr std::size_t kRightTicksField = 3;
 constexpr std::size_t kFirstRangeField = 24;
 constexpr std::int64_t kNanosPerMicro = 1000;
+// Stamps in µs beyond this do not fit a Stamp's nanoseconds (about ±292 years).
+constexpr long long kMaxMicroseconds = std::numeric_limits<std::int64_t>::max() / kNanosPerMicro;
 constexpr double kMillimetres = 1e-3;
 constexpr double kDeg = std::numbers::pi / 180.0;
 
@@ -58,8 +61,9 @@ long long MinesLogReader::integerField(const std::vector<std::string>& tokens, s
 void MinesLogReader::integrateOdometry(long long left_ticks, long long right_ticks) {
   if (have_ticks_) {
     const double metres_per_tick = 2.0 * std::numbers::pi * model_.wheel_radius / model_.ticks_per_revolution;
-    const double left = static_cast<double>(left_ticks - left_ticks_) * metres_per_tick;
-    const double right = static_cast<double>(right_ticks - right_ticks_) * metres_per_tick;
+    // In double: the difference of two arbitrary 64-bit counters can overflow.
+    const double left = (static_cast<double>(left_ticks) - static_cast<double>(left_ticks_)) * metres_per_tick;
+    const double right = (static_cast<double>(right_ticks) - static_cast<double>(right_ticks_)) * metres_per_tick;
     const double forward = 0.5 * (left + right);
     const double turn = (right - left) / (2.0 * model_.half_axle);
     pose_.x += forward * std::cos(pose_.theta + 0.5 * turn);
@@ -85,10 +89,19 @@ bool MinesLogReader::next(ScanRecord& record) {
   scan = Scan{};
   record.original = nullptr;
   record.line = lines_.lineNumber();
-  scan.stamp = Stamp::fromNanoseconds(integerField(tokens, kTimeField, "timestamp_us") * kNanosPerMicro);
+  const long long micros = integerField(tokens, kTimeField, "timestamp_us");
+  if (micros > kMaxMicroseconds || micros < -kMaxMicroseconds)
+    throw InputError(lines_.path(), lines_.lineNumber(), "timestamp_us",
+                     "'" + tokens[kTimeField] + "' is out of range for a stamp (|µs| <= " +
+                         std::to_string(kMaxMicroseconds) + ")");
+  scan.stamp = Stamp::fromNanoseconds(micros * kNanosPerMicro);
   stamp_order_.check(scan.stamp, record.line);
   integrateOdometry(integerField(tokens, kLeftTicksField, "left_ticks"),
                     integerField(tokens, kRightTicksField, "right_ticks"));
+  if (!isPlausibleCoordinate(pose_.x) || !isPlausibleCoordinate(pose_.y))
+    throw InputError(lines_.path(), lines_.lineNumber(), "left_ticks/right_ticks",
+                     "dead-reckoned pose more than " + std::to_string(static_cast<long>(kMaxPlausibleCoordinate)) +
+                         " m from the start; corrupt tick counts");
   scan.pose = pose_;
   scan.angle_min = model_.angle_min_deg * kDeg;
   scan.angle_increment = model_.field_of_view_deg / (model_.beams - 1) * kDeg;

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "scanfilter/input_error.hpp"
+#include "scanfilter/plausible_bounds.hpp"
 #include "scanfilter/point_code.hpp"
 
 namespace scanfilter {
@@ -63,6 +64,9 @@ Json parseLine(const std::string& text, const std::string& file, std::size_t lin
     return object;
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(file, line, "", std::string("malformed JSON: ") + e.what());
+  } catch (const nlohmann::json::exception& e) {
+    // out_of_range.406: a number beyond a double (1e400), found by scan_log_reader_fuzz.
+    throw InputError(file, line, "", std::string("unreadable JSON: ") + e.what());
   }
 }
 
@@ -107,7 +111,9 @@ std::vector<std::uint8_t> parseCodes(const Json& array, const char* key, std::si
   std::vector<std::uint8_t> codes(expected);
   for (std::size_t i = 0; i < expected; ++i) {
     const Json& v = array[i];
-    if (!v.is_number_integer() || !isValidPointCode(v.get<int>()))
+    // As int64: a huge code read as int would wrap to a valid one.
+    if (!v.is_number_integer() || v.get<std::int64_t>() < 0 || v.get<std::int64_t>() > 255 ||
+        !isValidPointCode(static_cast<int>(v.get<std::int64_t>())))
       check.fail(std::string(key) + "[" + std::to_string(i) + "]",
                  "expected a point code 0-3, got " + FieldChecker::describe(v));
     codes[i] = static_cast<std::uint8_t>(v.get<int>());
@@ -125,7 +131,7 @@ void ScanLogReader::parseHeader() {
   const FieldChecker check(lines_.path(), lines_.lineNumber());
   const Json object = parseLine(text, lines_.path(), lines_.lineNumber());
   const Json& version = check.require(object, "scanlog");
-  if (!version.is_number_integer() || version.get<int>() != 1)
+  if (!version.is_number_integer() || version.get<std::int64_t>() != 1)
     check.fail("scanlog", "unsupported version " + FieldChecker::describe(version) + "; expected 1");
   header_.version = 1;
   if (const auto it = object.find("source"); it != object.end() && it->is_string())
@@ -134,6 +140,9 @@ void ScanLogReader::parseHeader() {
   const Json& sensor = check.require(object, "sensor");
   if (!sensor.is_object()) check.fail("sensor", "expected an object");
   const auto mount = check.triple(check.require(sensor, "mount"), "sensor.mount");
+  if (!isPlausibleCoordinate(mount[0]) || !isPlausibleCoordinate(mount[1]))
+    check.fail("sensor.mount", "is more than " + std::to_string(static_cast<long>(kMaxPlausibleCoordinate)) +
+                                   " m from the robot; corrupt data");
   header_.sensor.mount = {mount[0], mount[1], mount[2]};
   const Json& direction = check.require(sensor, "direction");
   if (direction == "ccw") {
@@ -147,11 +156,17 @@ void ScanLogReader::parseHeader() {
   s.range_min = check.finiteNumber(check.require(sensor, "range_min"), "sensor.range_min");
   s.range_max = check.finiteNumber(check.require(sensor, "range_max"), "sensor.range_max");
   if (s.range_min < 0.0) check.fail("sensor.range_min", "is negative; expected >= 0");
+  if (s.range_max > kImplausibleRange)
+    check.fail("sensor.range_max", "is beyond any indoor sensor; expected <= " +
+                                       std::to_string(static_cast<int>(kImplausibleRange)) + " m");
   if (!(s.range_max > s.range_min))
     check.fail("sensor.range_max", "must exceed range_min (" + std::to_string(s.range_min) + ")");
   s.angular_accuracy_deg =
       check.finiteNumber(check.require(sensor, "angular_accuracy_deg"), "sensor.angular_accuracy_deg");
-  if (!(s.angular_accuracy_deg > 0.0)) check.fail("sensor.angular_accuracy_deg", "expected > 0");
+  // The filter config's bounds on Δθ (config/filter.yaml): the obstacle
+  // threshold is scaled by it, and 1e-300 would overflow that count.
+  if (!(s.angular_accuracy_deg >= 1e-6 && s.angular_accuracy_deg <= 90.0))
+    check.fail("sensor.angular_accuracy_deg", "expected 0 < value <= 90 (degrees)");
 }
 
 bool ScanLogReader::next(ScanRecord& record) {
@@ -174,6 +189,9 @@ void ScanLogReader::parseScan(const Json& object, std::string_view stamp_text, S
   scan.stamp = *stamp;
   stamp_order_.check(scan.stamp, lines_.lineNumber());
   const auto pose = check.triple(check.require(object, "pose"), "pose");
+  if (!isPlausibleCoordinate(pose[0]) || !isPlausibleCoordinate(pose[1]))
+    check.fail("pose", "is more than " + std::to_string(static_cast<long>(kMaxPlausibleCoordinate)) +
+                           " m from the origin; corrupt data");
   scan.pose = {pose[0], pose[1], pose[2]};
   scan.angle_min = check.finiteNumber(check.require(object, "angle_min"), "angle_min");
   scan.angle_increment = check.finiteNumber(check.require(object, "angle_increment"), "angle_increment");

@@ -1,6 +1,7 @@
 #include "scanfilter/scan_log_writer.hpp"
 
 #include <cmath>
+#include <filesystem>
 
 #include "scanfilter/input_error.hpp"
 
@@ -61,9 +62,16 @@ std::string scanLine(const ScanRecord& record) {
 }
 
 ScanLogWriter::ScanLogWriter(const std::string& path, const ScanLogHeader& header)
-    : path_(path), out_(path) {
+    : path_(path), partial_path_(path + ".partial"), out_(partial_path_) {
   if (!out_) throw InputError(path, 0, "", "cannot open for writing");
   out_ << headerToJson(header).dump() << '\n';
+}
+
+ScanLogWriter::~ScanLogWriter() {
+  if (closed_) return;
+  out_.close();
+  std::error_code ignored;  // nothing to report from a destructor: the error that got here is
+  std::filesystem::remove(partial_path_, ignored);
 }
 
 void ScanLogWriter::write(const ScanRecord& record) {
@@ -74,6 +82,10 @@ void ScanLogWriter::write(const ScanRecord& record) {
 void ScanLogWriter::close() {
   out_.close();
   if (out_.fail()) throw InputError(path_, 0, "", "close failed");
+  std::error_code error;
+  std::filesystem::rename(partial_path_, path_, error);
+  if (error) throw InputError(path_, 0, "", "cannot rename " + partial_path_ + " into place: " + error.message());
+  closed_ = true;
 }
 
 }  // namespace scanfilter

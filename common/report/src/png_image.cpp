@@ -125,13 +125,17 @@ void PngImage::paste(const PngImage& other, int x, int y) {
 }
 
 void PngImage::save(const std::string& path) const {
-  FILE* file = std::fopen(path.c_str(), "wb");
+  // Written under a temporary name and renamed into place: a failed or
+  // interrupted save leaves no partial picture behind.
+  const std::string tmp = path + ".partial";
+  FILE* file = std::fopen(tmp.c_str(), "wb");
   if (!file) throw std::runtime_error(path + ": cannot open for writing");
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   png_infop info = png_create_info_struct(png);
   if (!png || !info || setjmp(png_jmpbuf(png))) {
     png_destroy_write_struct(&png, &info);
     std::fclose(file);
+    std::remove(tmp.c_str());
     throw std::runtime_error(path + ": PNG encoding failed");
   }
   png_init_io(png, file);
@@ -142,7 +146,14 @@ void PngImage::save(const std::string& path) const {
     png_write_row(png, const_cast<png_bytep>(&pixels_[static_cast<std::size_t>(y) * width_ * 3]));
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
-  if (std::fclose(file) != 0) throw std::runtime_error(path + ": write failed");
+  if (std::fclose(file) != 0) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error(path + ": write failed");
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error(path + ": cannot rename the written file into place");
+  }
 }
 
 }  // namespace scanfilter

@@ -6,6 +6,7 @@
 
 #include "scanfilter/input_error.hpp"
 #include "scanfilter/sim/scene.hpp"
+#include "scanfilter/yaml_section.hpp"
 #include "yaml_sections.hpp"
 
 namespace scanfilter::sim {
@@ -35,7 +36,7 @@ void readGeometry(const SceneParser& p, const YAML::Node& root, Scene& scene) {
       std::vector<Eigen::Vector2d> v;
       for (std::size_t k = 0; k < pts.size(); ++k) v.push_back(p.point(pts[k], path + ".points[" + std::to_string(k) + "]"));
       for (std::size_t k = 0; k + 1 < v.size(); ++k) scene.segments.push_back({v[k], v[k + 1], m});
-      if (w["closed"] && w["closed"].as<bool>()) scene.segments.push_back({v.back(), v.front(), m});
+      if (w["closed"] && p.boolean(w["closed"], path + ".closed")) scene.segments.push_back({v.back(), v.front(), m});
     }
   }
   if (const YAML::Node boxes = p.sequence(root, "boxes")) {
@@ -94,8 +95,8 @@ Scene parseScene(const std::string& yaml_text, const std::string& name) {
   p.checkKeys(root, "scene",
               {"name", "description", "sensor", "lidar", "odometry", "walls", "boxes", "legs", "furniture", "trajectory"});
   Scene scene;
-  scene.name = root["name"] ? root["name"].as<std::string>() : std::filesystem::path(name).stem().string();
-  if (root["description"]) scene.description = root["description"].as<std::string>();
+  scene.name = root["name"] ? p.text(root["name"], "name") : std::filesystem::path(name).stem().string();
+  if (root["description"]) scene.description = p.text(root["description"], "description");
   scene.sensor.range_min = 0.15;
   scene.sensor.range_max = 6.0;
   readSensor(p, root["sensor"], scene, true);
@@ -107,12 +108,6 @@ Scene parseScene(const std::string& yaml_text, const std::string& name) {
   return scene;
 }
 
-Scene loadScene(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, 0, "", "cannot open scene file");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parseScene(text.str(), path);
-}
+Scene loadScene(const std::string& path) { return parseScene(readConfigText(path), path); }
 
 }  // namespace scanfilter::sim

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "builtin_texts.hpp"
+#include "scanfilter/yaml_section.hpp"
 #include "yaml_sections.hpp"
 
 namespace scanfilter::sim {
@@ -12,14 +13,6 @@ namespace scanfilter::sim {
 namespace {
 
 constexpr double kDegreesPerTurn = 360.0;
-
-std::string readFile(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, 0, "", "cannot open sensor file");
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 void parsePreset(const std::string& yaml_text, const std::string& file, Scene& scene) {
   YAML::Node root;
@@ -35,7 +28,7 @@ void parsePreset(const std::string& yaml_text, const std::string& file, Scene& s
   scene.lidar = LidarModel{};
   readSensor(p, root["sensor"], scene, false);
   readLidar(p, root["lidar"], scene.lidar);
-  scene.sensor_preset = root["name"] ? root["name"].as<std::string>() : std::filesystem::path(file).stem().string();
+  scene.sensor_preset = root["name"] ? p.text(root["name"], "name") : std::filesystem::path(file).stem().string();
 }
 
 }  // namespace
@@ -45,7 +38,8 @@ std::vector<std::string> builtinSensorNames() { return builtinNames(builtinSenso
 void applySensor(Scene& scene, const std::string& name_or_path) {
   if (const auto text = builtinText(builtinSensorTexts(), name_or_path))
     return parsePreset(*text, "builtin sensor " + name_or_path, scene);
-  if (std::filesystem::exists(name_or_path)) return parsePreset(readFile(name_or_path), name_or_path, scene);
+  std::error_code error;  // a name too long is "no such file", not an exception
+  if (std::filesystem::exists(name_or_path, error)) return parsePreset(readConfigText(name_or_path), name_or_path, scene);
   throw InputError(name_or_path, 0, "",
                    "no such sensor file, and not a built-in sensor (" + namesList(builtinSensorTexts()) + ")");
 }

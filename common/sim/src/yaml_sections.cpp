@@ -10,7 +10,7 @@ constexpr double kDegToRad = std::numbers::pi / 180.0;
 RangeMixing mixing(const SceneParser& p, const YAML::Node& map, RangeMixing fallback) {
   const YAML::Node v = map["mixing"];
   if (!v) return fallback;
-  const std::string m = v.as<std::string>();
+  const std::string m = p.text(v, "lidar.mixing");
   if (m == "linear") return RangeMixing::kLinear;
   if (m == "inverse_depth") return RangeMixing::kInverseDepth;
   p.fail(v, "lidar.mixing", "expected linear or inverse_depth, got \"" + m + "\"");
@@ -24,11 +24,10 @@ void readSensor(const SceneParser& p, const YAML::Node& node, Scene& scene, bool
   p.checkKeys(node, "sensor", keys);
   SensorInfo& s = scene.sensor;
   if (const YAML::Node m = node["mount"]) {
-    if (!m.IsSequence() || m.size() != 3) p.fail(m, "sensor.mount", "expected [x, y, yaw]");
-    s.mount = {m[0].as<double>(), m[1].as<double>(), m[2].as<double>()};
+    s.mount = p.mount(m, "sensor.mount");
   }
   if (const YAML::Node d = node["direction"]) {
-    const auto text = d.as<std::string>();
+    const auto text = p.text(d, "sensor.direction");
     if (text != "cw" && text != "ccw") p.fail(d, "sensor.direction", "expected cw or ccw");
     s.direction = text == "cw" ? BeamDirection::kCw : BeamDirection::kCcw;
   }

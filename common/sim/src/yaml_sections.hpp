@@ -26,7 +26,8 @@ class SceneParser {
   void checkKeys(const YAML::Node& map, const std::string& path, const std::set<std::string>& allowed) const {
     if (!map.IsMap()) fail(map, path, "expected a mapping");
     for (const auto& entry : map) {
-      const auto key = entry.first.as<std::string>();
+      if (!entry.first.IsScalar()) fail(entry.first, path, "expected plain keys, got a non-scalar key");
+      const std::string& key = entry.first.Scalar();
       if (!allowed.count(key)) fail(entry.first, path + "." + key, "unknown key");
     }
   }
@@ -63,10 +64,34 @@ class SceneParser {
     }
   }
 
+  // A scalar's text (a word, a name); a list or a mapping is an error.
+  std::string text(const YAML::Node& v, const std::string& path) const {
+    if (!v.IsScalar()) fail(v, path, "expected a string, got a list or mapping");
+    return v.Scalar();
+  }
+
+  bool boolean(const YAML::Node& v, const std::string& path) const {
+    try {
+      return v.as<bool>();
+    } catch (const YAML::Exception&) {
+      fail(v, path, "expected true or false");
+    }
+  }
+
+  // A three-number pose [x, y, yaw].
+  SensorMount mount(const YAML::Node& v, const std::string& path) const {
+    if (!v.IsSequence() || v.size() != 3) fail(v, path, "expected [x, y, yaw]");
+    try {
+      return {v[0].as<double>(), v[1].as<double>(), v[2].as<double>()};
+    } catch (const YAML::Exception&) {
+      fail(v, path, "expected [x, y, yaw] with numbers");
+    }
+  }
+
   Material material(const YAML::Node& map, const std::string& path) const {
     const YAML::Node v = map["material"];
     if (!v) return Material::kRough;
-    const std::string m = v.as<std::string>();
+    const std::string m = text(v, path + ".material");
     if (m == "rough") return Material::kRough;
     if (m == "smooth") return Material::kSmooth;
     if (m == "glass") return Material::kGlass;

@@ -67,8 +67,18 @@ class YamlSection {
   std::set<std::string> used_;
 };
 
+// The text of a mapping's key; a list or mapping used as a key is an error
+// naming the file and line (yaml-cpp would throw its own exception).
+std::string keyText(const YAML::Node& key, const std::string& file);
+
 // Parses YAML text, reporting syntax errors with file and line.
 YAML::Node parseYaml(const std::string& text, const std::string& file);
+// Largest config file read (scenes with many walls are ~10 kB): a bigger one
+// is not a config, and reading it whole (a 2 GB line) would take the memory.
+inline constexpr std::size_t kMaxConfigBytes = std::size_t{16} << 20;
+// A config file's text; InputError for a missing file, a directory or a file
+// over kMaxConfigBytes.
+std::string readConfigText(const std::string& path);
 // Reads and parses a YAML file.
 YAML::Node loadYamlFile(const std::string& path);
 

@@ -31,6 +31,7 @@ class CarmenLogReader final : public ScanSource {
 
  private:
   bool readScanLine(std::string& line);
+  void checkPlausiblePose(const Pose2& pose) const;
   void parseFlaser(const std::vector<std::string>& tokens, Scan& scan) const;
   void parseRobotLaser(const std::vector<std::string>& tokens, Scan& scan) const;
   double number(const std::vector<std::string>& tokens, std::size_t index, const char* field) const;

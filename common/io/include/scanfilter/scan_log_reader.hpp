@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scanfilter/line_reader.hpp"
+#include "scanfilter/plausible_bounds.hpp"
 #include "scanfilter/scan_source.hpp"
 #include "scanfilter/stamp_order.hpp"
 
@@ -21,7 +22,7 @@ class ScanLogReader final : public ScanSource {
 
   // Upper bound on a believable range (m): larger values are corrupt data,
   // not "out of range", and are rejected.
-  static constexpr double kImplausibleRange = 1.0e4;
+  static constexpr double kImplausibleRange = kMaxPlausibleRange;
   // Upper bound on beams per scan: guards memory against corrupt input.
   static constexpr std::size_t kMaxBeams = 1u << 20;
 

@@ -9,6 +9,7 @@
 #include <fastdds/dds/subscriber/DataReaderListener.hpp>
 #include <fastdds/dds/subscriber/SampleInfo.hpp>
 
+#include "scanfilter/dds/checked_type_support.hpp"
 #include "scanfilter/dds/dds_participant.hpp"
 #include "scanfilter/dds/progress_heartbeat.hpp"
 
@@ -40,7 +41,7 @@ class TypedReader : private eprosima::fastdds::dds::DataReaderListener {
         callback_(std::move(callback)),
         on_liveliness_(std::move(on_liveliness)),
         heartbeat_("the reader of " + topic_name) {
-    auto* topic = participant.topic(topic_name, eprosima::fastdds::dds::TypeSupport(new PubSubType()));
+    auto* topic = participant.topic(topic_name, eprosima::fastdds::dds::TypeSupport(new CheckedPubSubType<PubSubType>()));
     auto mask = eprosima::fastdds::dds::StatusMask::subscription_matched();
     if (on_liveliness_) mask << eprosima::fastdds::dds::StatusMask::liveliness_changed();
     reader_ = participant.subscriber()->create_datareader(topic, qos, this, mask);

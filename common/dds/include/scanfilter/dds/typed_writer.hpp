@@ -11,6 +11,7 @@
 #include <fastdds/dds/publisher/DataWriter.hpp>
 #include <fastdds/dds/publisher/DataWriterListener.hpp>
 
+#include "scanfilter/dds/checked_type_support.hpp"
 #include "scanfilter/dds/dds_participant.hpp"
 #include "scanfilter/dds/stream_qos.hpp"
 
@@ -31,7 +32,7 @@ class TypedWriter : private eprosima::fastdds::dds::DataWriterListener {
   TypedWriter(DdsParticipant& participant, const std::string& topic_name,
               const eprosima::fastdds::dds::DataWriterQos& qos)
       : participant_(participant), topic_(topic_name) {
-    auto* topic = participant.topic(topic_name, eprosima::fastdds::dds::TypeSupport(new PubSubType()));
+    auto* topic = participant.topic(topic_name, eprosima::fastdds::dds::TypeSupport(new CheckedPubSubType<PubSubType>()));
     writer_ = participant.publisher()->create_datawriter(topic, qos, this);
     if (writer_ == nullptr) throw std::runtime_error("cannot create a writer on " + topic_name);
   }
