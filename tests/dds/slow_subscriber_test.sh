@@ -15,9 +15,6 @@
 #   slow_subscriber_test.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
 BUILD="$1" SRC="$2"
-if [ -z "${SCANFILTER_IN_NETNS:-}" ] && [ "$(id -u)" = 0 ] && unshare -n true 2>/dev/null; then
-  exec unshare -n env SCANFILTER_IN_NETNS=1 bash -c 'ip link set lo up && exec bash "$0" "$@"' "$0" "$@"
-fi
 # Scans per pass: a few seconds at the pipeline's speed on two cores.
 SCANS=3000
 # The stalled passes against the free one: well below 1 because this
@@ -27,14 +24,7 @@ MIN_SPEED_RATIO=0.5
 # One LaserScan of 360 beams is about 1.5 kB and one map 30 kB: 3,000 scans
 # or a map per 20 ms kept for the stalled reader would be several MB.
 MAX_GROWTH_MB=2
-DOMAIN=$(( (RANDOM % 200) + 10 ))
-WORK=$(mktemp -d)
-PIDS=()
-cleanup() {
-  for pid in "${PIDS[@]}"; do kill -KILL "$pid" 2>/dev/null || true; done
-  rm -rf "$WORK"
-}
-trap cleanup EXIT
+source "$(dirname "$0")/../lib/dds_test_workspace.sh"  # private network namespace, DOMAIN, WORK, PIDS, cleanup
 fail() {
   echo "FAIL: $*"
   for f in "$WORK"/*.log; do [ -f "$f" ] && { echo "--- $f"; tail -n 10 "$f"; }; done

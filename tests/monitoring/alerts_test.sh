@@ -22,17 +22,7 @@
 # UpstreamNotAlive), each within a bounded wait.
 set -euo pipefail
 BUILD="$1" SRC="$2"
-if [ -z "${SCANFILTER_IN_NETNS:-}" ] && [ "$(id -u)" = 0 ] && unshare -n true 2>/dev/null; then
-  exec unshare -n env SCANFILTER_IN_NETNS=1 bash -c 'ip link set lo up && exec bash "$0" "$@"' "$0" "$@"
-fi
-DOMAIN=$(( (RANDOM % 200) + 10 ))
-WORK=$(mktemp -d)
-PIDS=()
-cleanup() {
-  for pid in "${PIDS[@]}"; do kill -KILL "$pid" 2>/dev/null || true; done
-  rm -rf "$WORK"
-}
-trap cleanup EXIT
+source "$(dirname "$0")/../lib/dds_test_workspace.sh"  # private network namespace, DOMAIN, WORK, PIDS, cleanup
 PROM_URL=http://127.0.0.1:19090
 fail() {
   {
