@@ -33,6 +33,8 @@ int main(int argc, char** argv) {
   std::string config_dir = SCANFILTER_SOURCE_DIR "/config";
   std::vector<std::string> sensors;
   int max_frames = 0;
+  bool defaults_only = false;
+  std::vector<std::string> variants;
   CLI::App app{"The accuracy table of docs/accuracy.md: the shipped defaults, the paper-literal reading and step 1 "
                "alone on every built-in scene"};
   app.add_option("--seeds", seeds, "simulator seeds scored (held out from the tuning seed)")
@@ -49,6 +51,12 @@ int main(int argc, char** argv) {
   app.add_option("--max-frames", max_frames, "scans per simulated log (0: the whole trajectory)")
       ->capture_default_str()
       ->check(bench::kFrameCountCheck);
+  app.add_flag("--defaults-only", defaults_only,
+               "score filter.yaml alone (a third of the time: for comparing a config variant)");
+  app.add_option("--variant", variants,
+                 "score these filter config files instead, each on the same simulated logs (repeat the option)")
+      ->allow_extra_args(false)
+      ->check(CLI::ExistingFile);
   CLI11_PARSE(app, argc, argv);
   if (sensors.empty()) sensors.emplace_back();  // the scenes' own
 
@@ -63,8 +71,18 @@ int main(int argc, char** argv) {
   FilterConfig step1_only = defaults;
   step1_only.params.penetration_enabled = false;
   step1_only.params.penetration.rescue_persistent_points = false;
-  const std::vector<std::pair<std::string, FilterConfig>> filters = {
+  std::vector<std::pair<std::string, FilterConfig>> filters = {
       {"defaults", defaults}, {"paper literal", literal}, {"step 1 only, no rescue", step1_only}};
+  if (defaults_only) filters.resize(1);
+  if (!variants.empty()) {
+    filters.clear();
+    try {
+      for (const auto& path : variants) filters.emplace_back(path, loadFilterConfig(path));
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "error: %s\n", e.what());
+      return 2;
+    }
+  }
 
   try {
     for (const auto& sensor : sensors) {

@@ -135,9 +135,10 @@ void BM_OffSurfaceCheck(benchmark::State& state) {
   sensorFramePoints(scan, hall.sensor, directions, points);
   OffSurfaceCheck check{JumpFilterParams{}};
   std::vector<std::uint8_t> labels(scan.size());
+  const std::vector<std::uint8_t> none_spared(scan.size(), 0);
   for (auto _ : state) {
     std::fill(labels.begin(), labels.end(), static_cast<std::uint8_t>(PointCode::kValid));
-    check.apply(points, scan.ranges, isFullTurn(scan), labels);
+    check.apply(points, scan.ranges, isFullTurn(scan), none_spared, labels);
     benchmark::DoNotOptimize(labels.data());
   }
   state.counters["beams"] = beams;

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <limits>
 #include <numbers>
 
 #include <random>
@@ -108,12 +109,14 @@ TEST(JumpFilter, ThinLegAtOneMetreIsKeptWhenEq7Allows) {
   EXPECT_EQ(leg_beams, 2u);
 }
 
-TEST(JumpFilter, SingleIsolatedReturnIsRemoved) {
+TEST(JumpFilter, SingleIsolatedReturnIsRemovedByEquation7) {
   const SensorInfo sensor = test::simpleSensor();
   Scan scan = castScan(World{}.wall({4, -4}, {4, 4}), {}, sensor);
   const std::size_t i = test::beamTowards(scan, sensor, 0.0);
   scan.ranges[i] = 2.0;  // a lone point in free space
-  const auto labels = label(scan, sensor);
+  JumpFilterParams paper;  // a lone return spans no angle: eq. 7 always deletes it
+  paper.keep_foreground_clusters = false;
+  const auto labels = label(scan, sensor, paper);
   EXPECT_EQ(labels[i], static_cast<std::uint8_t>(PointCode::kJump));
   EXPECT_EQ(countCode(labels, PointCode::kJump), 1u);
 }
@@ -252,6 +255,103 @@ std::size_t jumpPointsOnAGrazingWall(bool straight_runs) {
 TEST(StraightRuns, KeepAWallSeenAtGrazingIncidence) {
   EXPECT_GT(jumpPointsOnAGrazingWall(false), 3u) << "without the join the wall falls apart, or this shows nothing";
   EXPECT_EQ(jumpPointsOnAGrazingWall(true), 0u);
+}
+
+}  // namespace
+}  // namespace scanfilter
+
+namespace scanfilter {
+namespace {
+
+// keep_foreground_clusters (on by default): a cluster too short for eq. 7
+// that stands in front of what the sensor sees on both sides of it is kept.
+JumpFilterParams keepingForeground(bool keep = true) {
+  JumpFilterParams params;
+  params.keep_foreground_clusters = keep;
+  return params;
+}
+
+// A wall at 4 m with one beam returning at 2 m: a leg, a pole.
+Scan wallWithALoneReturnInFront(std::size_t* beam) {
+  const SensorInfo sensor = test::simpleSensor();
+  Scan scan = castScan(World{}.wall({4, -4}, {4, 4}), {}, sensor);
+  *beam = test::beamTowards(scan, sensor, 0.0);
+  scan.ranges[*beam] = 2.0;
+  return scan;
+}
+
+TEST(ForegroundClusters, ALoneReturnInFrontOfAWallIsKept) {
+  const SensorInfo sensor = test::simpleSensor();
+  std::size_t i = 0;
+  const Scan scan = wallWithALoneReturnInFront(&i);
+  EXPECT_EQ(label(scan, sensor, keepingForeground(false))[i], static_cast<std::uint8_t>(PointCode::kJump))
+      << "without the option eq. 7 deletes it";
+  EXPECT_EQ(JumpFilterParams{}.keep_foreground_clusters, true) << "config/filter.yaml ships it on";
+  const auto labels = label(scan, sensor, keepingForeground());
+  EXPECT_EQ(labels[i], static_cast<std::uint8_t>(PointCode::kValid));
+  EXPECT_EQ(countCode(labels, PointCode::kJump), 0u);
+}
+
+TEST(ForegroundClusters, ABeamWithoutAReturnBesideItCountsAsFarther) {
+  const SensorInfo sensor = test::simpleSensor();
+  std::size_t i = 0;
+  Scan scan = wallWithALoneReturnInFront(&i);
+  scan.ranges[i + 1] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(label(scan, sensor, keepingForeground())[i], static_cast<std::uint8_t>(PointCode::kValid));
+}
+
+TEST(ForegroundClusters, AReturnBetweenItsNeighboursIsStillRemoved) {
+  // Beside the lone return at 2 m, one at 3 m: in front of the wall, but
+  // behind its other neighbour, as a mixed return between the two is.
+  const SensorInfo sensor = test::simpleSensor();
+  std::size_t i = 0;
+  Scan scan = wallWithALoneReturnInFront(&i);
+  scan.ranges[i + 1] = 3.0;
+  const auto labels = label(scan, sensor, keepingForeground());
+  EXPECT_EQ(labels[i], static_cast<std::uint8_t>(PointCode::kValid));
+  EXPECT_EQ(labels[i + 1], static_cast<std::uint8_t>(PointCode::kJump));
+}
+
+TEST(ForegroundClusters, MixedReturnsBetweenAnEdgeAndAWallAreStillRemoved) {
+  // As MixedReturnTrailBetweenEdgeAndWallIsRemoved: the trail lies between
+  // the edge's range and the wall's, in front of one side only.
+  const SensorInfo sensor = test::simpleSensor();
+  Scan scan = castScan(World{}.wall({1.5, -1.5}, {1.5, 0.0}).wall({4, -4}, {4, 4}), {0, 0, -1.0}, sensor);
+  const std::size_t edge = test::beamTowards(scan, sensor, 0.0);
+  scan.ranges[edge + 1] = 2.1;
+  scan.ranges[edge + 2] = 2.8;
+  scan.ranges[edge + 3] = 3.5;
+  const auto labels = label(scan, sensor, keepingForeground());
+  for (std::size_t i = edge + 1; i <= edge + 3; ++i)
+    EXPECT_EQ(labels[i], static_cast<std::uint8_t>(PointCode::kJump)) << "beam " << i;
+}
+
+TEST(ForegroundClusters, TheEndOfAPartialScanIsNoBackground) {
+  // A half-turn scan whose first beam returns at 2 m in front of the wall:
+  // nothing is known beyond the field of view, so eq. 7 decides.
+  const SensorInfo sensor = test::simpleSensor();
+  Scan scan = castScan(World{}.wall({4, -4}, {4, 4}), {0, 0, -0.5}, sensor);
+  scan.ranges.resize(180);
+  ASSERT_TRUE(scan.hasReturn(1));
+  scan.ranges[0] = 0.5 * scan.ranges[1];
+  EXPECT_EQ(label(scan, sensor, keepingForeground())[0], static_cast<std::uint8_t>(PointCode::kJump));
+}
+
+TEST(ForegroundClusters, AClusterAcrossTheSeamIsJudgedByTheBeamsOutsideIt) {
+  // Two beams at 2 m, the last and the first of a full turn, in front of a
+  // wall at 4 m: the beams outside the cluster are n-2 and 1, not 0-1 and n.
+  const SensorInfo sensor = test::simpleSensor();
+  Scan scan = castScan(World{}.wall({4, -4}, {4, 4}), {}, sensor);
+  const std::size_t n = scan.size();
+  ASSERT_TRUE(scan.hasReturn(0) && scan.hasReturn(n - 1) && scan.hasReturn(1) && scan.hasReturn(n - 2));
+  scan.ranges[0] = scan.ranges[n - 1] = 2.0;
+  auto labels = label(scan, sensor, keepingForeground());
+  EXPECT_EQ(labels[0], static_cast<std::uint8_t>(PointCode::kValid));
+  EXPECT_EQ(labels[n - 1], static_cast<std::uint8_t>(PointCode::kValid));
+  scan.ranges[1] = 2.01;  // the side beyond beam 0 is no farther: nothing stands in front of it there
+  scan.ranges[2] = 2.02;
+  labels = label(scan, sensor, keepingForeground());
+  EXPECT_EQ(labels[n - 1], labels[0]);
 }
 
 }  // namespace

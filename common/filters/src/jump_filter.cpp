@@ -29,7 +29,7 @@ void JumpFilter::apply(const Scan& scan, const SensorInfo& sensor, std::span<std
     ++clusters;
   }
   judgeClusters(scan, clusters, labels);
-  off_surface_.apply(points_, scan.ranges, full_turn_, labels);
+  off_surface_.apply(points_, scan.ranges, full_turn_, foreground_, labels);
 }
 
 void JumpFilter::judgeClusters(const Scan& scan, std::uint32_t cluster_count, std::span<std::uint8_t> labels) {
@@ -45,10 +45,16 @@ void JumpFilter::judgeClusters(const Scan& scan, std::uint32_t cluster_count, st
   group_fill_ = group_start_;
   for (std::uint32_t i = 0; i < n; ++i)
     if (cluster_of_[i] != StraightRunJoin::kNoCluster) grouped_[group_fill_[joined[cluster_of_[i]]]++] = i;
+  foreground_.assign(n, 0);
   for (std::uint32_t c = 0; c < cluster_count; ++c) {
     const std::span<const std::uint32_t> members(grouped_.data() + group_start_[c], group_start_[c + 1] - group_start_[c]);
-    if (members.empty() || rule_.keepsCluster(members, scan.ranges, n, full_turn_, scan.angle_increment)) continue;
-    for (std::uint32_t m : members) labels[m] = static_cast<std::uint8_t>(PointCode::kJump);
+    if (members.empty()) continue;
+    const ClusterVerdict verdict = rule_.judge(members, scan.ranges, full_turn_, scan.angle_increment);
+    if (verdict == ClusterVerdict::kLongEnough) continue;
+    const bool foreground = verdict == ClusterVerdict::kForeground;
+    for (std::uint32_t m : members)
+      if (foreground) foreground_[m] = 1;
+      else labels[m] = static_cast<std::uint8_t>(PointCode::kJump);
   }
 }
 

@@ -19,7 +19,7 @@ bool OffSurfaceCheck::isOffLine(const Eigen::Vector2d& p, const Eigen::Vector2d&
 }
 
 void OffSurfaceCheck::apply(std::span<const Eigen::Vector2d> points, std::span<const double> ranges, bool full_turn,
-                            std::span<std::uint8_t> labels) {
+                            std::span<const std::uint8_t> spared, std::span<std::uint8_t> labels) {
   if (!params_.off_surface_check) return;
   const WrappedReturns returns(points, ranges, full_turn);
   const auto n = returns.size();
@@ -37,7 +37,8 @@ void OffSurfaceCheck::apply(std::span<const Eigen::Vector2d> points, std::span<c
   };
   marked_.clear();
   for (std::int64_t i = 0; i < n; ++i) {
-    if (labels[static_cast<std::size_t>(i)] != static_cast<std::uint8_t>(PointCode::kValid)) continue;
+    const auto beam = static_cast<std::size_t>(i);
+    if (labels[beam] != static_cast<std::uint8_t>(PointCode::kValid) || spared[beam]) continue;
     const double tol = offSurfaceTolerance(params_, ranges[static_cast<std::size_t>(i)]);
     if (sideCondemns(i, -1, tol) && sideCondemns(i, +1, tol)) marked_.push_back(static_cast<std::uint32_t>(i));
   }

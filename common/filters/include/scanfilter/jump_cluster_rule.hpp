@@ -7,6 +7,13 @@
 
 namespace scanfilter {
 
+// What eq. 6-7 (and keep_foreground_clusters) make of one cluster.
+enum class ClusterVerdict : std::uint8_t {
+  kLongEnough,  // spans the minimum tangential length of eq. 7
+  kForeground,  // too short, but stands in front of both sides (keep_foreground_clusters)
+  kTooShort,    // removed as jump points
+};
+
 // The parts of step 1 that both implementations must compute identically:
 // the neighbour radius of equation (5) and the span test of (6)-(7).
 class JumpClusterRule {
@@ -24,10 +31,10 @@ class JumpClusterRule {
   double maxRadiusPerMetre(double range_lo, double range_hi) const;
 
   // Equations (6) and (7) on one cluster. `members` are beam indices in
-  // increasing order; `beam_count` and `full_turn` describe the scan so the
-  // span can wrap across the seam; `seed` is the cluster's first index.
-  bool keepsCluster(std::span<const std::uint32_t> members, std::span<const double> ranges,
-                    std::size_t beam_count, bool full_turn, double angle_increment) const;
+  // increasing order; `full_turn` says whether the span can wrap across the
+  // seam (ranges.size() is the beam count); the seed is the first index.
+  ClusterVerdict judge(std::span<const std::uint32_t> members, std::span<const double> ranges, bool full_turn,
+                       double angle_increment) const;
 
   // θ_th of equation (7) for a cluster of mean range d_ave (and seed range d_seed).
   double spanThreshold(double d_ave, double d_seed) const;
@@ -37,6 +44,11 @@ class JumpClusterRule {
                                    bool full_turn);
 
  private:
+  // keep_foreground_clusters: the beams just outside the cluster on both
+  // sides return farther than its farthest member by more than the
+  // off-surface tolerance, or return nothing.
+  bool standsInFront(std::span<const std::uint32_t> members, std::span<const double> ranges, bool full_turn) const;
+
   double noiseWidening(double range) const {
     return params_.radius_noise_sigmas * rangeNoiseSigma(params_, range);
   }

@@ -52,6 +52,7 @@ class JumpFilter {
   std::vector<std::uint32_t> group_start_;  // members of each joined cluster, grouped, in index order
   std::vector<std::uint32_t> group_fill_;   // next free slot of each group while grouping
   std::vector<std::uint32_t> grouped_;
+  std::vector<std::uint8_t> foreground_;    // per beam: 1 in a cluster kept as foreground (the off-surface check spares it)
 };
 
 // The paper's steps as written: every member is compared with every free point.

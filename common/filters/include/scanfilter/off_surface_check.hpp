@@ -26,11 +26,12 @@ class OffSurfaceCheck {
   explicit OffSurfaceCheck(const JumpFilterParams& params) : params_(params) {}
 
   // Labels kJump every kValid point off both neighbour lines (nothing when
-  // off_surface_check is false). `points` are in
-  // the sensor frame (NaN without a return); on a full turn the neighbours
-  // wrap across the seam.
+  // off_surface_check is false), except those `spared` (1: a cluster kept
+  // as foreground, which lies off the background's lines by design).
+  // `points` are in the sensor frame (NaN without a return); on a full turn
+  // the neighbours wrap across the seam.
   void apply(std::span<const Eigen::Vector2d> points, std::span<const double> ranges, bool full_turn,
-             std::span<std::uint8_t> labels);
+             std::span<const std::uint8_t> spared, std::span<std::uint8_t> labels);
 
   // distanceToLine(p, a, b) > tol, without a square root (the hot path).
   static bool isOffLine(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b, double tol);
