@@ -19,8 +19,8 @@ namespace scanfilter {
 // from condemning itself. A side only counts when its third neighbour lies
 // on the same line: in clutter (chairs, shelves at 1° resolution) two
 // neighbours do not make a surface, and extrapolating them condemns real
-// returns. A thin leg is off both lines (removed here as by the cluster rule,
-// restored by step 2's persistence rescue).
+// returns. A thin leg is off both lines too: a cluster the cluster rule kept
+// as foreground (keep_foreground_clusters) is spared.
 class OffSurfaceCheck {
  public:
   explicit OffSurfaceCheck(const JumpFilterParams& params) : params_(params) {}
