@@ -25,8 +25,8 @@ struct PenetrationFilterParams {
   // `surface_gap` apart; the corridor then plays no part.
   bool require_both_sides = true;
   double straddle_half_width = 0.075;  // m
-  double surface_gap = 0.12;          // m
-  double own_surface_margin = 0.15;    // m, cells nearer the point are its own surface
+  double surface_gap = 0.06;          // m
+  double own_surface_margin = 0.25;    // m, cells nearer the point are its own surface
   double own_surface_margin_per_m = 0.02;  // m per m of range added to that margin
   // Beyond the paper: a beam meeting its surface at a grazing angle g runs
   // within straddle_half_width of that surface for straddle_half_width / tan g
@@ -38,7 +38,7 @@ struct PenetrationFilterParams {
   double grazing_margin_max = 1.0;  // m
   double behind_margin = 0.0;       // m, step (e) read literally: cells this near beyond p mark it
   double pose_jump_reset = 0.5;     // m, a larger sensor jump between frames resets the cache
-  std::size_t max_cache_frames = 200;  // bound on cached frames whatever T_max says
+  std::size_t max_cache_frames = 40;  // bound on cached frames whatever T_max says: obs_th counts over them (config/filter.yaml)
   bool cache_misdetected_points = false;  // misdetected points vote in later grids
   // Beyond the paper (docs/accuracy.md): step 1 deletes every cluster of one
   // or two beams, so a thin leg is always lost. A jump point is restored when
