@@ -39,6 +39,7 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(s.jump.span_range, d.jump.span_range);
   EXPECT_EQ(s.jump.straight_run_max_incidence_deg, d.jump.straight_run_max_incidence_deg);
   EXPECT_EQ(s.jump.keep_foreground_clusters, d.jump.keep_foreground_clusters);
+  EXPECT_EQ(s.jump.keep_unresolved_returns, d.jump.keep_unresolved_returns);
   EXPECT_EQ(s.jump_enabled, d.jump_enabled);
   EXPECT_EQ(s.penetration_enabled, d.penetration_enabled);
   EXPECT_EQ(s.penetration.own_surface_margin, d.penetration.own_surface_margin);
@@ -55,6 +56,7 @@ TEST(FilterConfig, PaperLiteralPresetLoads) {
   EXPECT_DOUBLE_EQ(paper.params.penetration.behind_margin, 0.1);
   EXPECT_FALSE(paper.params.penetration.rescue_persistent_points);
   EXPECT_FALSE(paper.params.jump.keep_foreground_clusters) << "eq. 7 as printed deletes every lone return";
+  EXPECT_FALSE(paper.params.jump.keep_unresolved_returns);
 }
 
 TEST(FilterConfig, AutoValuesComeFromTheSensor) {

@@ -344,3 +344,36 @@ TEST(ForegroundClusters, AClusterAcrossTheSeamIsJudgedByTheBeamsOutsideIt) {
 
 }  // namespace
 }  // namespace scanfilter
+
+namespace scanfilter {
+namespace {
+
+// keep_unresolved_returns: a lone return where the beams lie l_max apart or
+// more is kept; a nearer one is still eq. 7's to delete.
+std::uint8_t lonePointLabel(double wall_range, double lone_range, bool keep_unresolved) {
+  SensorInfo sensor = test::simpleSensor();
+  sensor.range_max = 12.0;
+  // Facing -1 rad: the beam towards the wall is far from the seam at beam 0.
+  Scan scan = castScan(World{}.wall({wall_range, -8}, {wall_range, 8}), {0, 0, -1.0}, sensor);
+  const std::size_t i = test::beamTowards(scan, sensor, 0.0);
+  scan.ranges[i - 1] = scan.ranges[i + 1] = std::numeric_limits<double>::quiet_NaN();  // nothing beside it
+  scan.ranges[i] = lone_range;
+  JumpFilterParams params;
+  params.keep_foreground_clusters = false;  // judge eq. 7 alone
+  params.keep_unresolved_returns = keep_unresolved;
+  params.d_max = sensor.range_max;
+  return label(scan, sensor, params)[i];
+}
+
+TEST(UnresolvedReturns, ALoneReturnBeyondTheResolvableRangeIsKept) {
+  // At 1° the beams lie l_max = 0.1 m apart at 5.73 m.
+  EXPECT_EQ(lonePointLabel(9.0, 6.0, true), static_cast<std::uint8_t>(PointCode::kValid));
+  EXPECT_EQ(lonePointLabel(9.0, 6.0, false), static_cast<std::uint8_t>(PointCode::kJump));
+}
+
+TEST(UnresolvedReturns, ANearerLoneReturnIsStillDeleted) {
+  EXPECT_EQ(lonePointLabel(9.0, 5.5, true), static_cast<std::uint8_t>(PointCode::kJump));
+}
+
+}  // namespace
+}  // namespace scanfilter

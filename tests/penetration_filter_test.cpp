@@ -184,7 +184,9 @@ std::size_t grazingWallPointsMarked(bool grazing_margin) {
 TEST(PenetrationFilter, GrazingMarginKeepsWallsSeenAtGrazingIncidence) {
   const std::size_t without = grazingWallPointsMarked(false);
   const std::size_t with = grazingWallPointsMarked(true);
-  EXPECT_GT(without, 50u) << "the case the margin exists for must occur";
+  // 43 without the margin with the shipped defaults (more before the wider
+  // own-surface margin and the narrower surface gap took some of them).
+  EXPECT_GT(without, 30u) << "the case the margin exists for must occur";
   EXPECT_LT(with * 2, without) << "with " << with << ", without " << without;
   std::printf("grazing wall points marked: %zu without the margin, %zu with\n", without, with);
 }

@@ -32,6 +32,7 @@ void readJump(YamlSection& s, FilterConfig& config) {
   s.read("straight_run_max_incidence_deg", p.straight_run_max_incidence_deg);
   s.read("straight_run_min_points", p.straight_run_min_points);
   s.read("keep_foreground_clusters", p.keep_foreground_clusters);
+  s.read("keep_unresolved_returns", p.keep_unresolved_returns);
   if (config.angular_accuracy_deg) s.requireRange("angular_accuracy_deg", *config.angular_accuracy_deg, 1e-6, 90.0, "0 < value <= 90");
   s.requireRange("alpha", p.alpha, 1e-9, 1e9, "a value > 0");
   s.requireRange("theta_k_deg", p.theta_k_deg, 0.0, 89.9, "0 <= value < 90 (cos θK must stay positive)");

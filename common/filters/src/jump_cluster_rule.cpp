@@ -51,6 +51,8 @@ ClusterVerdict JumpClusterRule::judge(std::span<const std::uint32_t> members, st
   const double span =
       static_cast<double>(spanInBeams(members, ranges.size(), full_turn)) * std::abs(angle_increment);
   if (span >= spanThreshold(d_ave, ranges[members.front()])) return ClusterVerdict::kLongEnough;
+  if (params_.keep_unresolved_returns && members.size() == 1 && d_ave * std::abs(angle_increment) >= params_.l_max)
+    return ClusterVerdict::kLongEnough;
   if (params_.keep_foreground_clusters && standsInFront(members, ranges, full_turn)) return ClusterVerdict::kForeground;
   return ClusterVerdict::kTooShort;
 }

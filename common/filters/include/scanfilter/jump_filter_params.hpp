@@ -52,6 +52,12 @@ struct JumpFilterParams {
   // front, so the option trades jump recall for thin obstacles kept
   // (measured in docs/accuracy.md, "Thin obstacles").
   bool keep_foreground_clusters = true;
+  // Beyond the paper: a lone return is kept when the beams at its range lie
+  // at least l_max apart (range·Δθ >= l_max: beyond 5.7 m at 1°). There an
+  // object as wide as the smallest eq. 7 keeps shows as this one return, so
+  // eq. 7 cannot tell it from an artefact; far walls at an angle, posts and
+  // door frames are such returns.
+  bool keep_unresolved_returns = true;
 };
 
 // The sensor's range noise σ(range) of the noise model above.
