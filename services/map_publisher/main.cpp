@@ -79,6 +79,13 @@ class MapService {
     }
   }
 
+  // The reader thread integrates under mutex_ for as long as the service
+  // lives: main reads the count through here, not from the grid.
+  std::size_t scansIntegrated() {
+    std::lock_guard lock(mutex_);
+    return grid_.scansIntegrated();
+  }
+
   void save() {
     last_save_ = std::chrono::steady_clock::now();
     if (settings_.save_path.empty()) return;
@@ -162,7 +169,7 @@ int main(int argc, char** argv) {
     const auto period = std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::duration<double>(1.0 / publish.rate_hz));
     runtime.runUntilStopped(period, [&] { service.tick(); });
     service.save();
-    spdlog::info("stopping after {} scans{}", grid.scansIntegrated(),
+    spdlog::info("stopping after {} scans{}", service.scansIntegrated(),
                  publish.save_path.empty() ? "" : "; map saved to " + publish.save_path + ".*");
     return 0;
   });

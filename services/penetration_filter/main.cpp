@@ -3,7 +3,9 @@
 // labelled scan on rt/<ns>/labeled_scan and a REP 117 LaserScan (removed
 // beams NaN by default, kept beams bit-identical) on rt/<ns>/scan_filtered for
 // rviz2, slam_toolbox or nav2.
+#include <cstdint>
 #include <memory>
+#include <optional>
 
 #include <spdlog/spdlog.h>
 
@@ -36,7 +38,8 @@ int main(int argc, char** argv) {
                                                                           rosDefaultWriterQos());
     runtime.reportMatched("writer", laser_topic, [&] { return laser_writer.matchedReaders(); });
     LaserScanMsg laser;
-    FilterStage stage(
+    std::optional<FilterStage> stage;
+    stage.emplace(
         runtime, "penetration_filter", kJumpFilteredTopic, kLabeledScanTopic,
         [&](const Scan& scan, const SensorInfo& sensor, std::span<std::uint8_t> labels) {
           if (enabled) filters.forSensor(sensor).apply(scan, sensor, labels);
@@ -46,9 +49,14 @@ int main(int argc, char** argv) {
           laser_writer.write(laser);
         });
     runtime.runUntilStopped();
+    // The stage's reader thread runs the filters until the stage is gone
+    // (its destructor joins it): only then are they ours to read. Reading
+    // them before was a data race (ThreadSanitizer, docs/reliability.md).
+    const std::uint64_t processed = stage->processed();
+    stage.reset();
     const PenetrationFilter* filter = filters.current();
     spdlog::info("stopping after {} scans ({} penetration cache resets, {} frames not judged: did not fit the cache)",
-                 stage.processed(), filter ? filter->resetCount() : 0, filter ? filter->unalignedFrames() : 0);
+                 processed, filter ? filter->resetCount() : 0, filter ? filter->unalignedFrames() : 0);
     return 0;
   });
 }

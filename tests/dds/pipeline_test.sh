@@ -171,7 +171,7 @@ metrics)
     kill -TERM "$pid"
     wait "$pid" || fail "service $pid exited non-zero after SIGTERM"
     elapsed_ms=$(( ($(date +%s%N) - start) / 1000000 ))
-    [ "$elapsed_ms" -lt 1000 ] || fail "service $pid took ${elapsed_ms} ms to stop"
+    [ "$elapsed_ms" -lt $((1000 * TIME_FACTOR)) ] || fail "service $pid took ${elapsed_ms} ms to stop"
   done
   ;;
 prometheus)
@@ -348,13 +348,13 @@ launcher)
   # Its own account: every stage matched, and how long that took.
   grep -q "^stages matched: waited [0-9.]* s" <<<"$out" || fail "run-pipeline.sh did not report the stages matched"
   waited=$(sed -n 's/^stages matched: waited \([0-9]*\)\.[0-9] s.*/\1/p' <<<"$out")
-  [ -n "$waited" ] && [ "$waited" -lt 5 ] || fail "run-pipeline.sh waited ${waited:-?} s for the stages to match"
+  [ -n "$waited" ] && [ "$waited" -lt $((5 * TIME_FACTOR)) ] || fail "run-pipeline.sh waited ${waited:-?} s for the stages to match"
   # The ingest's own start time (its first log line), independent of that.
   first=$(sed -n '1s/^\[\([0-9-]* [0-9:.]*\)\] \[scan_ingest\] \[info\] .*/\1/p' "$WORK/launch/scan_ingest.log")
   [ -n "$first" ] || fail "no start line in scan_ingest.log"
   started_after_ms=$(( $(date -d "$first" +%s%3N) - launched_ms ))
   echo "scan_ingest started ${started_after_ms} ms after the launch"
-  [ "$started_after_ms" -lt 8000 ] || fail "scan_ingest started ${started_after_ms} ms after the launch"
+  [ "$started_after_ms" -lt $((8000 * TIME_FACTOR)) ] || fail "scan_ingest started ${started_after_ms} ms after the launch"
   info=$("$SF" info "$WORK/launch/pipeline.labeled.scanlog.jsonl")
   grep -q "^scans: *$LAUNCH " <<<"$info" && grep -q "labels: $LAUNCH scans" <<<"$info" ||
     fail "the labelled output is not $LAUNCH labelled scans: $info"

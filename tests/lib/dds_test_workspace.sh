@@ -10,6 +10,11 @@
 if [ -z "${SCANFILTER_IN_NETNS:-}" ] && [ "$(id -u)" = 0 ] && unshare -n true 2>/dev/null; then
   exec unshare -n env SCANFILTER_IN_NETNS=1 bash -c 'ip link set lo up && exec bash "$0" "$@"' "$0" "$@"
 fi
+# 3. TIME_FACTOR: scripts/sanitize.sh sets SCANFILTER_TEST_TIME_FACTOR, as the
+#    instrumented services run several times slower; the limits that measure
+#    their speed (how fast a service stops or starts) are multiplied by it.
+#    Waits for a condition are not: they are bounded generously already.
+TIME_FACTOR=${SCANFILTER_TEST_TIME_FACTOR:-1}
 DOMAIN=$(( (RANDOM % 200) + 10 ))
 WORK=$(mktemp -d)
 PIDS=()

@@ -4,7 +4,9 @@
 
 #include <ctime>
 #include <fstream>
+#include <mutex>
 #include <sstream>
+#include <vector>
 
 namespace scanfilter::dds_io {
 
@@ -54,8 +56,14 @@ ServiceMetrics::ServiceMetrics(const std::string& service, const std::string& ad
 ServiceMetrics::~ServiceMetrics() {
   // Stopping civetweb waits out its 2 s poll quantum, which would break the
   // promise that SIGTERM ends a service within a second. The service is
-  // exiting: close the listening socket's owner with the process instead.
-  static_cast<void>(exposer_.release());
+  // exiting: the exposer (its thread and listening socket) lives on until the
+  // process ends. It is kept reachable from a never-destroyed list rather
+  // than released into nothing: an object meant to outlive its owner, not a
+  // leak (LeakSanitizer reported the released one, docs/reliability.md).
+  static std::mutex kept_mutex;
+  static auto* kept_until_exit = new std::vector<std::unique_ptr<Exposer>>();
+  const std::lock_guard lock(kept_mutex);
+  kept_until_exit->push_back(std::move(exposer_));
 }
 
 void ServiceMetrics::pointsRemoved(const std::string& reason, double count) {
