@@ -22,8 +22,10 @@ DOMAIN=$(( (RANDOM % 200) + 10 ))
 WORK=$(mktemp -d)
 PIDS=()
 LISTENER=""
+declare -A PID_OF TRACER_OF  # per service: its PID under strace, and strace's
 cleanup() {
-  for pid in "${PIDS[@]}" $LISTENER; do kill -KILL "$pid" 2>/dev/null || true; done
+  # The services first: killing strace detaches it, and its tracee lives on.
+  for pid in "${PID_OF[@]}" "${PIDS[@]}" $LISTENER; do kill -KILL "$pid" 2>/dev/null || true; done
   rm -rf "$WORK"
 }
 trap cleanup EXIT
@@ -86,7 +88,6 @@ traced() {  # name binary args...: runs it under strace in the background (PID_O
   PID_OF[$name]=$pid
   TRACER_OF[$name]=$tracer
 }
-declare -A PID_OF TRACER_OF
 
 scrape() { curl -s --max-time 2 "http://127.0.0.1:$1/metrics" || true; }
 matched() {  # port endpoint topic
