@@ -7,9 +7,10 @@
 
 namespace scanfilter {
 
-// What eq. 6-7 (and keep_foreground_clusters) make of one cluster.
+// What eq. 6-7 (with keep_unresolved_returns and keep_foreground_clusters)
+// make of one cluster.
 enum class ClusterVerdict : std::uint8_t {
-  kLongEnough,  // spans the minimum tangential length of eq. 7
+  kLongEnough,  // spans eq. 7's minimum tangential length, or is a lone return eq. 7 cannot resolve
   kForeground,  // too short, but stands in front of both sides (keep_foreground_clusters)
   kTooShort,    // removed as jump points
 };
