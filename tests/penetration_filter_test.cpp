@@ -2,6 +2,8 @@
 #include <cstdio>
 #include <random>
 
+#include <limits>
+
 #include <gtest/gtest.h>
 
 #include "scan_builder.hpp"
@@ -71,6 +73,22 @@ TEST(PenetrationFilter, WarmUpKeepsEverything) {
     EXPECT_EQ(std::count(labels.begin(), labels.end(), kMisdetected), 0);
   }
   EXPECT_FALSE(filters.fast().warmedUp());
+}
+
+TEST(PenetrationFilter, ABeamWithoutAReturnIsNoReturnWhateverItsLabelSays) {
+  // Found by labeled_scan_sample_fuzz: a sample labelled "valid" on a NaN
+  // range put a NaN point into the grid (a float-to-int conversion of NaN).
+  const SensorInfo sensor = test::simpleSensor();
+  for (auto impl : {Implementation::kReference, Implementation::kFast}) {
+    auto filter = makePenetrationFilter(PenetrationFilterParams{}, impl);
+    for (int k = 0; k < 8; ++k) {  // past the warm-up, so frames are judged too
+      Scan scan = castScan(kRoom, {}, sensor, 360, 0.1 * k);
+      scan.ranges[7] = std::numeric_limits<double>::quiet_NaN();
+      std::vector<std::uint8_t> labels(scan.size(), kValid);  // what a faulty upstream might send
+      filter->apply(scan, sensor, labels);
+      EXPECT_EQ(labels[7], static_cast<std::uint8_t>(PointCode::kNoReturn)) << "frame " << k;
+    }
+  }
 }
 
 TEST(PenetrationFilter, KnownWallsAreKept) {

@@ -73,6 +73,10 @@ void PenetrationFilter::cacheFrame(Stamp stamp, std::span<const std::uint8_t> la
 
 void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
                               std::span<std::uint8_t> labels) {
+  // Labels come from upstream (a message, a log): a beam without a return is
+  // no return whatever they say, or its NaN point would enter the grid.
+  for (std::size_t i = 0; i < labels.size(); ++i)
+    if (!scan.hasReturn(i)) labels[i] = static_cast<std::uint8_t>(PointCode::kNoReturn);
   resetOnPoseJump(sensorOrigin(scan.pose, sensor.mount), scan.stamp);
   ++frames_seen_;
   expireFrames(scan.stamp);
