@@ -76,8 +76,9 @@ TEST(PenetrationFilter, WarmUpKeepsEverything) {
 }
 
 TEST(PenetrationFilter, ABeamWithoutAReturnIsNoReturnWhateverItsLabelSays) {
-  // Found by labeled_scan_sample_fuzz: a sample labelled "valid" on a NaN
-  // range put a NaN point into the grid (a float-to-int conversion of NaN).
+  // Labels come from upstream (a message, a log): one saying "valid" on a
+  // NaN range must not put a NaN point into the grid (seen while chasing a
+  // labeled_scan_sample_fuzz report whose NaN came from the beam angles).
   const SensorInfo sensor = test::simpleSensor();
   for (auto impl : {Implementation::kReference, Implementation::kFast}) {
     auto filter = makePenetrationFilter(PenetrationFilterParams{}, impl);

@@ -123,6 +123,32 @@ TEST(SampleRegression, ImplausiblePoseAndRangeLimitRejected) {
   EXPECT_EQ(rejectionReason(msg), "bad_sensor");
 }
 
+TEST(SampleRegression, ImplausibleBeamAnglesRejected) {
+  // labeled_scan_sample_fuzz: a step of 1.2e307 rad made angle_min + i·step
+  // infinite, the beam's direction NaN, and a NaN point reached the grid.
+  LabeledScanMsg msg;
+  msg.ranges({1.0, 2.0});
+  msg.angle_min(-1.5708);
+  msg.angle_increment(0.0668424);
+  msg.range_min(0.1);
+  msg.range_max(10.0);
+  msg.angular_accuracy_deg(0.5);
+  EXPECT_FALSE(rejectionReason(msg).has_value());
+  msg.angle_increment(1.20162e+307);
+  EXPECT_EQ(rejectionReason(msg), "implausible_angles");
+  msg.angle_increment(0.0668424);
+  msg.angle_min(1e300);
+  EXPECT_EQ(rejectionReason(msg), "implausible_angles");
+  LaserScanMsg laser;
+  laser.ranges({1.0f, 2.0f});
+  laser.angle_increment(0.01f);
+  laser.range_min(0.1f);
+  laser.range_max(10.0f);
+  EXPECT_FALSE(laserScanRejectionReason(laser).has_value());
+  laser.angle_increment(1e30f);
+  EXPECT_EQ(laserScanRejectionReason(laser), "implausible_angles");
+}
+
 TEST(SampleRegression, OdometryChecked) {
   OdometryMsg msg;
   msg.pose().pose().orientation().w(1.0);

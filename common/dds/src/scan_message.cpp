@@ -93,6 +93,7 @@ std::optional<std::string> rejectionReason(const LabeledScanMsg& msg) {
     return "implausible_pose";
   if (!(msg.angle_increment() != 0.0) || !std::isfinite(msg.angle_increment()) || !std::isfinite(msg.angle_min()))
     return "zero_increment";
+  if (!isPlausibleBeamGeometry(msg.angle_min(), msg.angle_increment())) return "implausible_angles";
   if (!(msg.range_max() > msg.range_min()) || !(msg.angular_accuracy_deg() >= kMinAngularAccuracyDeg) ||
       !(msg.range_min() >= 0.0) ||
       !(msg.range_max() <= kMaxPlausibleRange) || !(msg.angular_accuracy_deg() <= kMaxAngularAccuracyDeg))
@@ -109,6 +110,7 @@ std::optional<std::string> laserScanRejectionReason(const LaserScanMsg& msg) {
   if (!msg.intensities().empty() && msg.intensities().size() != n) return "length_mismatch";
   if (!(msg.angle_increment() != 0.0f) || !std::isfinite(msg.angle_increment()) || !std::isfinite(msg.angle_min()))
     return "zero_increment";
+  if (!isPlausibleBeamGeometry(msg.angle_min(), msg.angle_increment())) return "implausible_angles";
   // The filter's d_min/d_max come from these: they must name a range.
   if (!(msg.range_min() >= 0.0f) || !(msg.range_max() > msg.range_min()) || !(msg.range_max() <= kMaxPlausibleRange))
     return "bad_sensor";

@@ -196,6 +196,8 @@ void ScanLogReader::parseScan(const Json& object, std::string_view stamp_text, S
   scan.angle_min = check.finiteNumber(check.require(object, "angle_min"), "angle_min");
   scan.angle_increment = check.finiteNumber(check.require(object, "angle_increment"), "angle_increment");
   if (scan.angle_increment == 0.0) check.fail("angle_increment", "is 0; expected a non-zero step");
+  if (!isPlausibleBeamGeometry(scan.angle_min, scan.angle_increment))
+    check.fail("angle_increment", "or angle_min is beyond a believable scan (|angle_min| <= 4π, |step| <= π/2 rad)");
 
   const Json& ranges = check.require(object, "ranges");
   if (!ranges.is_array()) check.fail("ranges", "expected an array");

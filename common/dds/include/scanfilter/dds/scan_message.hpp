@@ -45,12 +45,13 @@ void toMessage(const Scan& scan, const SensorInfo& sensor, std::uint64_t sequenc
 
 // Why a sample from the wire cannot be filtered, as a metric label
 // ("length_mismatch", "nan_pose", "implausible_pose" (beyond
-// kMaxPlausibleCoordinate), "zero_increment", "too_many_beams", "empty",
+// kMaxPlausibleCoordinate), "zero_increment", "implausible_angles" (beyond
+// kMaxPlausibleAngle or kMaxPlausibleAngleStep), "too_many_beams", "empty",
 // "bad_sensor" (range limits or Δθ), "bad_label", "bad_stamp"), or nothing
 // when it is fine.
 std::optional<std::string> rejectionReason(const LabeledScanMsg& msg);
 // The same for a driver's LaserScan ("empty", "too_many_beams",
-// "length_mismatch", "zero_increment", "bad_sensor", "bad_stamp") and
+// "length_mismatch", "zero_increment", "implausible_angles", "bad_sensor", "bad_stamp") and
 // Odometry ("nan_pose", "implausible_pose", "bad_stamp"): scan_ingest's live source checks every
 // sample with these before it converts it.
 std::optional<std::string> laserScanRejectionReason(const LaserScanMsg& msg);
