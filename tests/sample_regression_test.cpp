@@ -97,16 +97,22 @@ TEST(SampleRegression, LaserScanRangeLimitsChecked) {
   EXPECT_EQ(laserScanRejectionReason(msg), "zero_increment");
 }
 
-// A pose of 9.3e181 m passed the checks and overflowed the int cell index
-// of the penetration grid (UBSan float-cast-overflow); ranges up to a
-// float's 3e38 m would too.
-TEST(SampleRegression, ImplausiblePoseAndRangeLimitRejected) {
+// Two beams, 0.1-10 m, a sample every check accepts.
+LabeledScanMsg acceptableLabeledScan() {
   LabeledScanMsg msg;
   msg.ranges({1.0, 2.0});
   msg.angle_increment(0.1);
   msg.range_min(0.1);
   msg.range_max(10.0);
   msg.angular_accuracy_deg(0.5);
+  return msg;
+}
+
+// A pose of 9.3e181 m passed the checks and overflowed the int cell index
+// of the penetration grid (UBSan float-cast-overflow); ranges up to a
+// float's 3e38 m would too.
+TEST(SampleRegression, ImplausiblePoseAndRangeLimitRejected) {
+  LabeledScanMsg msg = acceptableLabeledScan();
   EXPECT_FALSE(rejectionReason(msg).has_value());
   msg.pose_x(9.33641e+181);
   EXPECT_EQ(rejectionReason(msg), "implausible_pose");
@@ -126,17 +132,12 @@ TEST(SampleRegression, ImplausiblePoseAndRangeLimitRejected) {
 TEST(SampleRegression, ImplausibleBeamAnglesRejected) {
   // labeled_scan_sample_fuzz: a step of 1.2e307 rad made angle_min + i·step
   // infinite, the beam's direction NaN, and a NaN point reached the grid.
-  LabeledScanMsg msg;
-  msg.ranges({1.0, 2.0});
+  LabeledScanMsg msg = acceptableLabeledScan();
   msg.angle_min(-1.5708);
-  msg.angle_increment(0.0668424);
-  msg.range_min(0.1);
-  msg.range_max(10.0);
-  msg.angular_accuracy_deg(0.5);
   EXPECT_FALSE(rejectionReason(msg).has_value());
   msg.angle_increment(1.20162e+307);
   EXPECT_EQ(rejectionReason(msg), "implausible_angles");
-  msg.angle_increment(0.0668424);
+  msg.angle_increment(0.1);
   msg.angle_min(1e300);
   EXPECT_EQ(rejectionReason(msg), "implausible_angles");
   LaserScanMsg laser;
