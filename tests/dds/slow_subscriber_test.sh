@@ -25,23 +25,17 @@ MIN_SPEED_RATIO=0.5
 # or a map per 20 ms kept for the stalled reader would be several MB.
 MAX_GROWTH_MB=2
 source "$(dirname "$0")/../lib/dds_test_workspace.sh"  # private network namespace, DOMAIN, WORK, PIDS, cleanup
+source "$(dirname "$0")/../lib/service_checks.sh"  # scrape, matched, fail
 fail() {
   echo "FAIL: $*"
   for f in "$WORK"/*.log; do [ -f "$f" ] && { echo "--- $f"; tail -n 10 "$f"; }; done
   exit 1
 }
 PROFILES="$SRC/deploy/fastdds-loopback.xml"
-scrape() { curl -s --max-time 2 "http://127.0.0.1:$1/metrics" || true; }
 metric() {  # port regex
   local page
   page=$(scrape "$1")
   awk -v re="^$2 " '$0 ~ re {print int($2); exit}' <<<"$page"
-}
-matched() {  # port endpoint topic
-  local page
-  page=$(scrape "$1")
-  awk -v ep="endpoint=\"$2\"" -v topic="topic=\"$3\"" \
-    'index($0, "scanfilter_dds_matched{") == 1 && index($0, ep) && index($0, topic) {print int($2)}' <<<"$page"
 }
 wait_matched() {  # port endpoint topic peers
   local deadline=$((SECONDS + 30)) n

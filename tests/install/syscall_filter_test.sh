@@ -29,13 +29,7 @@ cleanup() {
   rm -rf "$WORK"
 }
 trap cleanup EXIT
-fail() {
-  echo "FAIL: $*"
-  for f in "$WORK"/*.log; do
-    if [ -f "$f" ]; then echo "--- $f"; tail -n 20 "$f"; fi
-  done
-  exit 1
-}
+source "$(dirname "$0")/../lib/service_checks.sh"  # scrape, matched, fail
 # Bound on waiting for discovery (strace slows everything down).
 MATCH_TIMEOUT_S=60
 
@@ -89,13 +83,6 @@ traced() {  # name binary args...: runs it under strace in the background (PID_O
   TRACER_OF[$name]=$tracer
 }
 
-scrape() { curl -s --max-time 2 "http://127.0.0.1:$1/metrics" || true; }
-matched() {  # port endpoint topic
-  local page
-  page=$(scrape "$1")
-  awk -v ep="endpoint=\"$2\"" -v topic="topic=\"$3\"" \
-    'index($0, "scanfilter_dds_matched{") == 1 && index($0, ep) && index($0, topic) {print int($2)}' <<<"$page"
-}
 wait_matched() {  # port endpoint topic
   local deadline=$((SECONDS + MATCH_TIMEOUT_S)) n
   while :; do

@@ -10,13 +10,7 @@
 set -euo pipefail
 BUILD="$1" SRC="$2" CASE="$3"
 source "$(dirname "$0")/../lib/dds_test_workspace.sh"  # private network namespace, DOMAIN, WORK, PIDS, cleanup
-fail() {
-  echo "FAIL: $*"
-  for f in "$WORK"/*.log; do
-    if [ -f "$f" ]; then echo "--- $f"; tail -n 20 "$f"; fi
-  done
-  exit 1
-}
+source "$(dirname "$0")/../lib/service_checks.sh"  # scrape, matched, fail
 SF="$BUILD/tools/scanfilter"
 PROFILES="$SRC/deploy/fastdds-loopback.xml"
 INJECT="$BUILD/tests/security/scan_injector"
@@ -58,12 +52,6 @@ received() {  # port service: scanfilter_scans_received_total, 0 when not counte
   echo "${n:-0}"
 }
 
-matched() {  # port endpoint topic
-  local page
-  page=$(scrape "$1")
-  awk -v ep="endpoint=\"$2\"" -v topic="topic=\"$3\"" \
-    'index($0, "scanfilter_dds_matched{") == 1 && index($0, ep) && index($0, topic) {print int($2)}' <<<"$page"
-}
 
 WATCH=()  # services that must stay up while we wait for them
 wait_matched() {  # port endpoint topic [count]: until that endpoint has matched that many peers
