@@ -111,6 +111,25 @@ TEST(FrameAligner, AFrameOfSomewhereElseDoesNotFit) {
   EXPECT_FALSE(aligner.align(grid, frame.points, frame.usable, frame.origin).good);
 }
 
+// A fine scanner's frame is fitted with every k-th point only (the cost of
+// the fit stays that of a few hundred points) and still takes out the error.
+TEST(FrameAligner, AFineScanIsFittedWithAtMostMaxFitPoints) {
+  SensorInfo sensor = test::simpleSensor();
+  const PenetrationGrid grid = cacheOf(kRoom, sensor, 10);
+  FrameAlignmentParams params;
+  params.max_fit_points = 100;
+  const Placed frame = placedFrame(kRoom, sensor, {0.3, 0.1, 0.0}, {0.36, 0.07, 1.5 * test::kDeg});
+  FrameAligner aligner{params};
+  const FrameAlignment fit = aligner.align(grid, frame.points, frame.usable, frame.origin);
+  ASSERT_TRUE(fit.good) << fit.matches << " of " << fit.candidates;
+  EXPECT_LE(fit.candidates, 100);
+  EXPECT_GT(fit.candidates, 50) << "every k-th, not the first 100";
+  EXPECT_LT((fit.correction * frame.origin - sensorOrigin({0.3, 0.1, 0.0}, sensor.mount)).norm(), 0.005);
+  params.max_fit_points = 0;  // all
+  FrameAligner all{params};
+  EXPECT_GT(all.align(grid, frame.points, frame.usable, frame.origin).candidates, 100);
+}
+
 // Through step 2: odometry drifting 2 cm and 0.5° per frame makes the walls of
 // each new frame lie beside the cached ones, and without alignment step 2
 // takes them for points behind walls; with it, none is lost.

@@ -290,6 +290,28 @@ TEST(PenetrationRule, OwnSurfaceMarginProtectsThePointsWall) {
   EXPECT_NE(rule.evidence(r, point, {1.8, 0.0}, rule.ownMarginSq(2.0)), PenetrationRule::kNone);
 }
 
+// The fast beam walk stops at reachAlongBeam: nothing beyond it, within the
+// walk's width of the beam, may say anything, or the two implementations
+// would disagree.
+TEST(PenetrationRule, NothingBeyondTheReachAlongTheBeamIsEvidence) {
+  PenetrationFilterParams p;  // both sides required: the widest band
+  const PenetrationRule rule(p);
+  const Eigen::Vector2d r(0, 0), point(3, 0);
+  for (double own : {0.0, 0.05, 0.25, 0.8}) {
+    const double own_sq = own * own;
+    const double reach = rule.reachAlongBeam(3.0, own_sq);
+    EXPECT_LE(reach, 3.0 + rule.behindMargin());
+    for (double t = reach + 1e-6; t < 3.5; t += 0.01)
+      for (double d = -rule.outerHalfWidth(); d <= rule.outerHalfWidth(); d += 0.005)
+        EXPECT_EQ(rule.evidence(r, point, {t, d}, own_sq), PenetrationRule::kNone) << own << " " << t << " " << d;
+  }
+  // ... and it is tight: just before it, at the edge of the band, there is evidence.
+  const double own = 0.25;
+  const double reach = rule.reachAlongBeam(3.0, own * own);
+  EXPECT_NE(rule.evidence(r, point, {reach - 0.003, 0.999 * rule.outerHalfWidth()}, own * own),
+            PenetrationRule::kNone);
+}
+
 // A wall crossed by the beam has neighbouring cells on both sides of it; an
 // edge or a leg the beam passes beside has them on one side only, and two
 // objects the beam passes between are too far apart.

@@ -60,6 +60,7 @@ void readAlignment(const YamlSection& parent, FrameAlignmentParams& a) {
   s.read("min_matches", a.min_matches);
   s.read("max_rms", a.max_rms);
   s.read("min_rms_gain", a.min_rms_gain);
+  s.read("max_fit_points", a.max_fit_points);
   s.requireRange("max_iterations", a.max_iterations, 1, 100, "an integer 1-100");
   s.requireRange("max_match_distance", a.max_match_distance, 1e-3, 2.0, "0.001-2 (m)");
   s.requireRange("max_neighbour_span", a.max_neighbour_span, 1e-3, 10.0, "0.001-10 (m)");
@@ -68,6 +69,7 @@ void readAlignment(const YamlSection& parent, FrameAlignmentParams& a) {
   s.requireRange("min_matches", a.min_matches, 3, 1e6, "an integer >= 3 (three unknowns)");
   s.requireRange("max_rms", a.max_rms, 0.0, 1.0, "0-1 (m)");
   s.requireRange("min_rms_gain", a.min_rms_gain, 0.0, 1.0, "0-1 (m)");
+  s.requireRange("max_fit_points", a.max_fit_points, 0, 1e6, "an integer >= 0 (0: every point)");
   s.rejectUnknownKeys();
 }
 

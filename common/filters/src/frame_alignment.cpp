@@ -118,6 +118,21 @@ void FrameAligner::findNormals(std::span<const Eigen::Vector2d> points, const st
     with_normal_points_.push_back(points[i]);
     normals_.push_back(perpendicular(along) / span);
   }
+  thinToMaxFitPoints();
+}
+
+void FrameAligner::thinToMaxFitPoints() {
+  const auto max_points = static_cast<std::size_t>(params_.max_fit_points);
+  const std::size_t n = with_normal_points_.size();
+  if (max_points == 0 || n <= max_points) return;
+  const std::size_t stride = (n + max_points - 1) / max_points;  // every stride-th: at most max_points
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < n; k += stride, ++kept) {
+    with_normal_points_[kept] = with_normal_points_[k];
+    normals_[kept] = normals_[k];
+  }
+  with_normal_points_.resize(kept);
+  normals_.resize(kept);
 }
 
 int FrameAligner::matchPoints(const Eigen::Isometry2d& correction) {

@@ -207,8 +207,11 @@ bool FastPenetrationFilter::isMisdetected(const Eigen::Vector2d& r, const Eigen:
   const Eigen::Vector2d v = p - r;
   const double length = v.norm();
   if (length <= 0.0) return false;
-  // Penetrating cells project onto the beam between r and p + behind margin.
-  const Eigen::Vector2d end = r + v * ((length + rule_.behindMargin()) / length);
+  // Penetrating cells project onto the beam between r and the reach; the
+  // slack keeps the walk a superset whatever the rounding.
+  const double reach = rule_.reachAlongBeam(length, own_sq) + detail::kBoundSlack;
+  if (reach <= 0.0) return false;
+  const Eigen::Vector2d end = r + v * (reach / length);
   evidence_along_beam_.reset();
   return window_.anyAlongRay(r, end, rule_.outerHalfWidth() + positionSlack(), [&](CellIndex, const Eigen::Vector2d& q) {
     return evidence_along_beam_.add(rule_.evidence(r, p, q, own_sq), q);

@@ -36,6 +36,11 @@ struct FrameAlignmentParams {
   // otherwise chase range noise and let the cache wander; a frame that
   // already fits keeps its pose.
   double min_rms_gain = 0.003;
+  // At most this many points with a surface direction take part in the fit
+  // (every k-th of them when there are more; 0: all). Three unknowns need few
+  // points; beyond a few hundred they add cost (a 3,600-beam scan has ten
+  // times those of a 360-beam one) but not accuracy.
+  int max_fit_points = 720;
 };
 
 
@@ -77,6 +82,8 @@ class FrameAligner {
   // with the answer sure to stay the same (0 when nothing is sure).
   const Eigen::Vector2d* nearestObstacle(const Eigen::Vector2d& p, double* unchanged_within) const;
   void findNormals(std::span<const Eigen::Vector2d> points, const std::vector<bool>& usable);
+  // Keeps every k-th point with a direction so that at most max_fit_points remain.
+  void thinToMaxFitPoints();
   // Bits x0 .. x0 + count - 1 (count at most kMaxRun) of row y of occupied_bits_.
   std::uint64_t occupiedRun(int y, int x0, int count) const;
   int matchPoints(const Eigen::Isometry2d& correction);

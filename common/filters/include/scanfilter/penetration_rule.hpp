@@ -60,6 +60,18 @@ class PenetrationRule {
   double outerHalfWidth() const { return outer_; }
   double behindMargin() const { return std::sqrt(behind_sq_); }
 
+  // How far along a beam of length `length` (from the sensor) evidence can
+  // lie, for a point with own-surface margin² `own_sq`. A q within outer_ of
+  // the beam and projecting at t has |p - q|² <= (length - t)² + outer_², so
+  // beyond length - sqrt(own² - outer_²) it is always on p's own surface:
+  // the beam walk stops there instead of walking that surface's cells.
+  double reachAlongBeam(double length, double own_sq) const {
+    if (behind_sq_ > own_sq) return length + behindMargin();  // step (e) reaches past p
+    const double outer_sq = outer_ * outer_;
+    if (own_sq <= outer_sq) return length;
+    return length - std::sqrt(own_sq - outer_sq);
+  }
+
  private:
   double corridor_sq_;
   double outer_;
