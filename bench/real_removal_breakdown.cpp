@@ -88,20 +88,8 @@ void dumpRemovedReobserved(std::ofstream& out, const RecordedLog& log, const Reo
   }
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  std::vector<std::string> configs, logs;
-  std::string dump;
-  CLI::App app{"Removals of real recordings by step, against multi-view consistency, for several filter configs"};
-  app.add_option("--config", configs, "filter config YAML (repeat for several)")
-      ->required()
-      ->allow_extra_args(false)->check(CLI::ExistingFile);
-  app.add_option("--dump", dump, "CSV of the first config's removed returns");
-  app.add_option("logs", logs, "CARMEN, Mines or scan logs")->required()->check(CLI::ExistingFile);
-  CLI11_PARSE(app, argc, argv);
-  spdlog::set_level(spdlog::level::warn);  // the penetration step logs each cache reset
-
+// One line per log and config: removals by step against re-observation.
+void report(const std::vector<std::string>& configs, const std::vector<std::string>& logs, const std::string& dump) {
   std::vector<FilterConfig> filters;
   for (const auto& path : configs) filters.push_back(loadFilterConfig(path));
   std::ofstream dump_out;
@@ -133,6 +121,26 @@ int main(int argc, char** argv) {
                   all.selectivity());
       if (c == 0 && dump_out.is_open()) dumpRemovedReobserved(dump_out, log, seen, labels);
     }
+  }
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> configs, logs;
+  std::string dump;
+  CLI::App app{"Removals of real recordings by step, against multi-view consistency, for several filter configs"};
+  app.add_option("--config", configs, "filter config YAML (repeat for several)")
+      ->required()
+      ->allow_extra_args(false)->check(CLI::ExistingFile);
+  app.add_option("--dump", dump, "CSV of the first config's removed returns");
+  app.add_option("logs", logs, "CARMEN, Mines or scan logs")->required()->check(CLI::ExistingFile);
+  CLI11_PARSE(app, argc, argv);
+  spdlog::set_level(spdlog::level::warn);  // the penetration step logs each cache reset
+  try {
+    report(configs, logs, dump);
+  } catch (const std::exception& e) {  // a malformed config or log: say which, not a crash
+    std::fprintf(stderr, "real_removal_breakdown: %s\n", e.what());
+    return 1;
   }
   return 0;
 }

@@ -96,6 +96,8 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.read("pose_jump_reset", p.pose_jump_reset);
   s.read("max_cache_frames", p.max_cache_frames);
   s.read("cache_misdetected_points", p.cache_misdetected_points);
+  s.read("edge_vote_margin_deg", p.edge_vote_margin_deg);
+  s.read("edge_depth_step", p.edge_depth_step);
   s.read("rescue_persistent_points", p.rescue_persistent_points);
   s.read("rescue_min_count", p.rescue_min_count);
   s.read("rescue_radius", p.rescue_radius);
@@ -116,6 +118,8 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.requireRange("max_cache_frames", static_cast<double>(p.max_cache_frames), 1, 1e7, "an integer >= 1");
   s.requireRange("rescue_min_count", p.rescue_min_count, 1, 1e9, "an integer >= 1");
   s.requireRange("rescue_radius", p.rescue_radius, 0.0, 1.0, "0 <= value <= 1 (m)");
+  s.requireRange("edge_vote_margin_deg", p.edge_vote_margin_deg, 0.0, 45.0, "0 <= value <= 45 (degrees; 0: off)");
+  s.requireRange("edge_depth_step", p.edge_depth_step, 0.0, 10.0, "0 <= value <= 10 (m)");
   s.rejectUnknownKeys();
 }
 

@@ -3,13 +3,26 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include <spdlog/spdlog.h>
 
+#include "scanfilter/depth_edges.hpp"
 #include "scanfilter/point_code.hpp"
 #include "scanfilter/scan_geometry.hpp"
 
 namespace scanfilter {
+
+namespace {
+// The far side of a depth edge that counts: returns this frame keeps. Behind
+// a mirror or a pane the farther returns are ghosts, already judged, and the
+// pane's own returns next to them must still vote.
+std::vector<bool> keptReturns(std::span<const std::uint8_t> labels) {
+  std::vector<bool> kept(labels.size());
+  for (std::size_t i = 0; i < labels.size(); ++i) kept[i] = labels[i] == static_cast<std::uint8_t>(PointCode::kValid);
+  return kept;
+}
+}  // namespace
 
 PenetrationFilter::PenetrationFilter(const PenetrationFilterParams& params)
     : params_(params),
@@ -53,13 +66,15 @@ void PenetrationFilter::expireFrames(Stamp stamp) {
   }
 }
 
-void PenetrationFilter::cacheFrame(Stamp stamp, std::span<const std::uint8_t> labels) {
-  CachedFrame frame{stamp, {}, {}};
+void PenetrationFilter::cacheFrame(const Scan& scan, std::span<const std::uint8_t> labels) {
+  CachedFrame frame{scan.stamp, {}, {}};
+  const std::vector<bool> edge = nearSideOfDepthEdge(scan, keptReturns(labels), edgeHalfWidthBeams(scan),
+                                                     params_.edge_depth_step);
   for (std::size_t i = 0; i < labels.size(); ++i) {
     const auto code = static_cast<PointCode>(labels[i]);
     if (code == PointCode::kNoReturn) continue;
-    const bool votes = code == PointCode::kValid ||
-                       (code == PointCode::kMisdetected && params_.cache_misdetected_points);
+    const bool votes = !edge[i] && (code == PointCode::kValid ||
+                                    (code == PointCode::kMisdetected && params_.cache_misdetected_points));
     if (votes) {
       frame.points.push_back(points_[i]);
       grid_.add(points_[i]);
@@ -87,7 +102,13 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
   } else {
     placeFrame(scan, sensor);
   }
-  cacheFrame(scan.stamp, labels);  // where the alignment put it: the cache stays self-consistent
+  cacheFrame(scan, labels);  // where the alignment put it: the cache stays self-consistent
+}
+
+int PenetrationFilter::edgeHalfWidthBeams(const Scan& scan) const {
+  const double step_deg = std::abs(scan.angle_increment) * 180.0 / std::numbers::pi;
+  if (params_.edge_vote_margin_deg <= 0.0 || !(step_deg > 0.0)) return 0;
+  return static_cast<int>(std::ceil(params_.edge_vote_margin_deg / step_deg - 1e-9));
 }
 
 void PenetrationFilter::judge(const Scan& scan, const SensorInfo& sensor,

@@ -101,7 +101,9 @@ class PenetrationFilter {
   int evidenceAround(const Eigen::Vector2d& p) const;
   void resetOnPoseJump(const Eigen::Vector2d& origin, Stamp stamp);
   void expireFrames(Stamp stamp);
-  void cacheFrame(Stamp stamp, std::span<const std::uint8_t> labels);
+  void cacheFrame(const Scan& scan, std::span<const std::uint8_t> labels);
+  // Beams either side of a return within edge_vote_margin_deg (0: off).
+  int edgeHalfWidthBeams(const Scan& scan) const;
 
   std::deque<CachedFrame> cache_;
   BeamDirectionTable directions_;
