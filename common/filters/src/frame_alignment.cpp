@@ -39,24 +39,14 @@ void FrameAligner::snapshotObstacles(const PenetrationGrid& grid, std::span<cons
   width_ = top.x - lo_.x + 1;
   height_ = top.y - lo_.y + 1;
   cells_.assign(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), kNoObstacle);
-  words_per_row_ = (width_ + kBitsPerWord - 1) / kBitsPerWord + 1;  // +1: a run may read one word past the row
-  occupied_bits_.assign(static_cast<std::size_t>(words_per_row_) * static_cast<std::size_t>(height_), 0);
+  occupied_bits_.reset(width_, height_);
   centroids_.clear();
   grid.forEachObstacleIn(lo_, top, [&](CellIndex c) {
     const int x = c.x - lo_.x, y = c.y - lo_.y;
     cells_[static_cast<std::size_t>(y * width_ + x)] = static_cast<std::int32_t>(centroids_.size());
-    occupied_bits_[static_cast<std::size_t>(y * words_per_row_ + x / kBitsPerWord)] |= std::uint64_t{1} << (x % kBitsPerWord);
+    occupied_bits_.set(x, y);
     centroids_.push_back(grid.centroid(c));
   });
-}
-
-std::uint64_t FrameAligner::occupiedRun(int y, int x0, int count) const {
-  // Lowest bit first.
-  const std::uint64_t* row = occupied_bits_.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(words_per_row_);
-  const int word = x0 / kBitsPerWord, shift = x0 % kBitsPerWord;
-  std::uint64_t bits = row[word] >> shift;
-  if (shift != 0) bits |= row[word + 1] << (kBitsPerWord - shift);
-  return bits & ((std::uint64_t{1} << count) - 1);
 }
 
 const Eigen::Vector2d* FrameAligner::nearestObstacle(const Eigen::Vector2d& p, double* unchanged_within) const {
@@ -78,8 +68,8 @@ const Eigen::Vector2d* FrameAligner::nearestObstacle(const Eigen::Vector2d& p, d
   for (int y = std::max(0, cy - reach); y <= std::min(height_ - 1, cy + reach) && x_lo <= x_hi; ++y) {
     // The obstacle cells of this row in x order, as the cell-by-cell scan
     // visited them (ties keep going to the last one seen).
-    for (int x0 = x_lo; x0 <= x_hi; x0 += kMaxRun) {
-      for (std::uint64_t bits = occupiedRun(y, x0, std::min(kMaxRun, x_hi - x0 + 1)); bits != 0; bits &= bits - 1) {
+    for (int x0 = x_lo; x0 <= x_hi; x0 += CellBitmap::kMaxRun) {
+      for (std::uint64_t bits = occupied_bits_.run(y, x0, std::min(CellBitmap::kMaxRun, x_hi - x0 + 1)); bits != 0; bits &= bits - 1) {
         const int x = x0 + std::countr_zero(bits);
         const Eigen::Vector2d& q = centroids_[static_cast<std::size_t>(cells_[static_cast<std::size_t>(y * width_ + x)])];
         const double d = (q - p).squaredNorm();

@@ -14,12 +14,16 @@ void ObstacleWindow::resize(CellIndex lo, CellIndex hi) {
   block_width_ = static_cast<std::uint32_t>((hi.x >> kBlockBits) - block_lo_.x + 1);
   block_height_ = static_cast<std::uint32_t>((hi.y >> kBlockBits) - block_lo_.y + 1);
   blocks_.assign(static_cast<std::size_t>(block_width_) * block_height_, 0);
+  rows_.reset(static_cast<int>(width_), static_cast<int>(height_));
+  columns_.reset(static_cast<int>(height_), static_cast<int>(width_));
 }
 
 void ObstacleWindow::mark(CellIndex c, const Eigen::Vector2d& position) {
   cells_[static_cast<std::size_t>(c.y - lo_.y) * width_ + static_cast<std::size_t>(c.x - lo_.x)] =
       static_cast<std::int32_t>(positions_.size());
   positions_.push_back(position);
+  rows_.set(c.x - lo_.x, c.y - lo_.y);
+  columns_.set(c.y - lo_.y, c.x - lo_.x);
   blocks_[static_cast<std::size_t>((c.y >> kBlockBits) - block_lo_.y) * block_width_ +
           static_cast<std::size_t>((c.x >> kBlockBits) - block_lo_.x)] = 1;
 }

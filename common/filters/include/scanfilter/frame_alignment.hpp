@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "scanfilter/cell_bitmap.hpp"
 #include "scanfilter/penetration_grid.hpp"
 
 namespace scanfilter {
@@ -84,8 +85,6 @@ class FrameAligner {
   void findNormals(std::span<const Eigen::Vector2d> points, const std::vector<bool>& usable);
   // Keeps every k-th point with a direction so that at most max_fit_points remain.
   void thinToMaxFitPoints();
-  // Bits x0 .. x0 + count - 1 (count at most kMaxRun) of row y of occupied_bits_.
-  std::uint64_t occupiedRun(int y, int x0, int count) const;
   int matchPoints(const Eigen::Isometry2d& correction);
   // Gauss-Newton from no correction until it converges or max_iterations;
   // matches_ already holds the matches of no correction (align made them).
@@ -104,10 +103,7 @@ class FrameAligner {
   // neighbourhood (7 x 7 cells at the defaults) is read as 7 short bit runs,
   // and only the set bits cost a look at cells_ (at 3,600 beams the scan of
   // empty cells was a third of step 2's time).
-  static constexpr int kBitsPerWord = 64;
-  static constexpr int kMaxRun = kBitsPerWord - 1;
-  std::vector<std::uint64_t> occupied_bits_;
-  int words_per_row_ = 0;
+  CellBitmap occupied_bits_;
   std::vector<Eigen::Vector2d> centroids_;
   CellIndex lo_;
   int width_ = 0;

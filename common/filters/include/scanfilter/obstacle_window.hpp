@@ -1,11 +1,13 @@
 #pragma once
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "scanfilter/cell_bitmap.hpp"
 #include "scanfilter/penetration_grid.hpp"
 
 namespace scanfilter {
@@ -14,7 +16,9 @@ namespace scanfilter {
 // rectangle of cells: the reach of the frame being judged. Built once per
 // frame, its size follows the sensor's range, never the map's. Besides the
 // cells it flags 8 x 8-cell blocks holding any obstacle, so a beam walk skips
-// free space a block at a time.
+// free space a block at a time, and keeps the cells as bits by row and by
+// column, so that inside a block the walk reads the few cells across the
+// beam at each step as one word.
 class ObstacleWindow {
  public:
   static constexpr int kBlockBits = 3;
@@ -65,6 +69,8 @@ class ObstacleWindow {
   std::uint32_t block_width_ = 0;
   std::uint32_t block_height_ = 0;
   std::vector<std::uint8_t> blocks_;
+  CellBitmap rows_;     // bit x - lo_.x of row y - lo_.y
+  CellBitmap columns_;  // bit y - lo_.y of row x - lo_.x
 };
 
 namespace detail {
@@ -95,6 +101,11 @@ bool ObstacleWindow::anyAlongRay(const Eigen::Vector2d& a, const Eigen::Vector2d
   const auto lineAt = [&](std::int32_t i) { return a[other] + ((i + 0.5) * cell_size_ - a[axis]) * slope; };
   const auto cell = [axis](std::int32_t i, std::int32_t j) { return axis == 0 ? CellIndex{i, j} : CellIndex{j, i}; };
 
+  // The window's cells along the walk (i) and across it (j).
+  const std::int32_t i_min = axis == 0 ? lo_.x : lo_.y;
+  const std::int32_t j_min = axis == 0 ? lo_.y : lo_.x;
+  const auto i_max = static_cast<std::int32_t>(i_min + static_cast<std::int32_t>(axis == 0 ? width_ : height_) - 1);
+  const auto j_max = static_cast<std::int32_t>(j_min + static_cast<std::int32_t>(axis == 0 ? height_ : width_) - 1);
   const std::int32_t lo = first(std::min(a[axis], b[axis]) - half_width - detail::kBoundSlack);
   const std::int32_t hi = last(std::max(a[axis], b[axis]) + half_width + detail::kBoundSlack);
   for (std::int32_t chunk = lo >> kBlockBits; chunk <= hi >> kBlockBits; ++chunk) {
@@ -109,11 +120,16 @@ bool ObstacleWindow::anyAlongRay(const Eigen::Vector2d& a, const Eigen::Vector2d
       occupied = axis == 0 ? blockHasObstacle(chunk, bj) : blockHasObstacle(bj, chunk);
     if (!occupied) continue;
     for (std::int32_t i = i0; i <= i1; ++i) {
+      if (i < i_min || i > i_max) continue;  // this column is outside the window
       const double line = lineAt(i);
-      for (std::int32_t j = first(line - band), j_hi = last(line + band); j <= j_hi; ++j) {
-        const CellIndex c = cell(i, j);
-        const std::int32_t index = indexOf(c);
-        if (index != kNoObstacle && pred(c, positions_[static_cast<std::size_t>(index)])) return true;
+      const std::int32_t j_lo = std::max(first(line - band), j_min), j_hi = std::min(last(line + band), j_max);
+      for (std::int32_t j0 = j_lo; j0 <= j_hi; j0 += CellBitmap::kMaxRun) {
+        const int count = std::min(CellBitmap::kMaxRun, j_hi - j0 + 1);
+        std::uint64_t bits = axis == 0 ? columns_.run(i - i_min, j0 - j_min, count) : rows_.run(i - i_min, j0 - j_min, count);
+        for (; bits != 0; bits &= bits - 1) {  // the obstacle cells of this step, in j order
+          const CellIndex c = cell(i, j0 + std::countr_zero(bits));
+          if (pred(c, positions_[static_cast<std::size_t>(indexOf(c))])) return true;
+        }
       }
     }
   }
