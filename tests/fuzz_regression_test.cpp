@@ -19,6 +19,7 @@
 #include "scanfilter/scan_log_reader.hpp"
 #include "scanfilter/scan_log_writer.hpp"
 #include "scanfilter/sim/scene.hpp"
+#include "scanfilter/sim/sensor_preset.hpp"
 #include "temp_file.hpp"
 
 namespace scanfilter {
@@ -145,6 +146,21 @@ TEST(FuzzRegression, SceneNonScalarWhereAWordBelongs) {
             std::string::npos);
   EXPECT_NE(errorOf([&] { sim::parseScene("[a]: 1\n", "s.yaml"); }).find("s.yaml:1: scene: expected plain keys"),
             std::string::npos);
+}
+
+// sensor_preset_fuzz (campaign 4): `beams: 1.4e76` was converted to int
+// (undefined behaviour); counts are now bounded, with a located error.
+TEST(FuzzRegression, SensorPresetBeamsBeyondAnInt) {
+  sim::Scene scene = sim::findScene("hall");
+  for (const std::string beams : {"14555555555555555555555555555555555555555555555555555555555555555555555555540",
+                                  "100001", "2147483648"}) {
+    const TempFile preset("huge-beams.yaml", "name: huge\nsensor:\n  range_max: 8\n  beams: " + beams + "\n");
+    const std::string error = errorOf([&] { sim::applySensor(scene, preset.path()); });
+    EXPECT_NE(error.find(":4: sensor.beams: expected a whole number from 1 to 100000"), std::string::npos) << error;
+  }
+  const TempFile fine("fine-beams.yaml", "name: fine\nsensor:\n  range_max: 8\n  beams: 100000\n");
+  sim::applySensor(scene, fine.path());
+  EXPECT_EQ(scene.lidar.beams, 100000);
 }
 
 TEST(FuzzRegression, FilterConfigListAsKey) {

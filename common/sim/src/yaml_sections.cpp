@@ -6,6 +6,11 @@ namespace scanfilter::sim {
 
 namespace {
 constexpr double kDegToRad = std::numbers::pi / 180.0;
+// Bounds on the counts a scene or sensor file may give: far beyond any real
+// scanner (a 0.0036° step) and any useful footprint sampling, low enough
+// that the arrays they size fit in memory.
+constexpr int kMaxBeams = 100000;
+constexpr int kMaxFootprintRays = 1000;
 
 RangeMixing mixing(const SceneParser& p, const YAML::Node& map, RangeMixing fallback) {
   const YAML::Node v = map["mixing"];
@@ -35,7 +40,7 @@ void readSensor(const SceneParser& p, const YAML::Node& node, Scene& scene, bool
   s.range_max = p.positive(node, "sensor", "range_max", s.range_max);
   if (!(s.range_max > s.range_min)) p.fail(node["range_max"], "sensor.range_max", "must exceed range_min");
   s.angular_accuracy_deg = p.positive(node, "sensor", "angular_accuracy_deg", s.angular_accuracy_deg);
-  scene.lidar.beams = p.count(node, "sensor", "beams", scene.lidar.beams);
+  scene.lidar.beams = p.count(node, "sensor", "beams", scene.lidar.beams, kMaxBeams);
   scene.lidar.rate_hz = p.positive(node, "sensor", "rate_hz", scene.lidar.rate_hz);
 }
 
@@ -55,7 +60,7 @@ void readLidar(const SceneParser& p, const YAML::Node& node, LidarModel& m) {
   m.beam_divergence_mrad = p.number(node, s, "beam_divergence_mrad", m.beam_divergence_mrad);
   m.exit_aperture = p.number(node, s, "exit_aperture", m.exit_aperture);
   m.exposure_sweep = p.number(node, s, "exposure_sweep", m.exposure_sweep);
-  m.footprint_rays = p.count(node, s, "footprint_rays", m.footprint_rays);
+  m.footprint_rays = p.count(node, s, "footprint_rays", m.footprint_rays, kMaxFootprintRays);
   m.grazing_angle_deg = p.number(node, s, "grazing_angle_deg", m.grazing_angle_deg);
   m.grazing_probability = p.probability(node, s, "grazing_probability", m.grazing_probability);
   m.grazing_error_max = p.number(node, s, "grazing_error_max", m.grazing_error_max);

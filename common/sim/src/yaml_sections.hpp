@@ -98,10 +98,12 @@ class SceneParser {
     fail(v, path + ".material", "expected rough, smooth or glass, got \"" + m + "\"");
   }
 
-  // A whole number >= 1.
-  int count(const YAML::Node& map, const std::string& path, const char* key, int fallback) const {
+  // A whole number from 1 to `max` (a bound keeps the conversion to int
+  // defined and the arrays sized by it within memory).
+  int count(const YAML::Node& map, const std::string& path, const char* key, int fallback, int max) const {
     const double x = number(map, path, key, fallback);
-    if (!(x >= 1.0) || x != std::floor(x)) fail(map[key], path + "." + key, "expected a whole number >= 1");
+    if (!(x >= 1.0 && x <= max) || x != std::floor(x))
+      fail(map[key], path + "." + key, "expected a whole number from 1 to " + std::to_string(max));
     return static_cast<int>(x);
   }
 
