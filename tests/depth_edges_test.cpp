@@ -1,7 +1,7 @@
 // Step 2's cache takes no votes from returns at the near side of a depth
 // edge (mixed returns smear an edge outwards), where the far side is a
-// background the caller vouches for (a mirror's or a pane's own returns,
-// next to ghosts, still vote).
+// background the caller vouches for (step 2: returns it keeps, so that a
+// pane's own returns next to ghosts it has marked still vote).
 #include "scanfilter/depth_edges.hpp"
 
 #include <algorithm>

@@ -47,6 +47,9 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(s.penetration.rescue_persistent_points, d.penetration.rescue_persistent_points);
   EXPECT_EQ(s.penetration.rescue_min_count, d.penetration.rescue_min_count);
   EXPECT_EQ(s.penetration.rescue_radius, d.penetration.rescue_radius);
+  EXPECT_EQ(s.penetration.edge_vote_margin_deg, d.penetration.edge_vote_margin_deg);
+  EXPECT_EQ(s.penetration.edge_depth_step, d.penetration.edge_depth_step);
+  EXPECT_EQ(s.penetration.alignment.max_fit_points, d.penetration.alignment.max_fit_points);
   EXPECT_FALSE(shipped.angular_accuracy_deg) << "auto: from the sensor";
 }
 
@@ -79,6 +82,9 @@ TEST(FilterConfigErrors, NameFileLineAndKey) {
   EXPECT_EQ(errorOf("penetration_filter:\n  min_frames: 0\n"), "f.yaml:2: penetration_filter.min_frames: expected an integer >= 1");
   EXPECT_EQ(errorOf("penetration:\n  x: 1\n"), "f.yaml:1: penetration: unknown section; expected jump_filter or penetration_filter");
   EXPECT_EQ(errorOf("jump_filter: [1, 2\n").substr(0, 26), "f.yaml:2: malformed YAML: ");
+  EXPECT_EQ(errorOf("penetration_filter:\n  alignment:\n    max_fit_points: 10\n"),
+            "f.yaml:3: penetration_filter.alignment.max_fit_points: must be 0 (every point) or at least min_matches "
+            "(20): fewer points could never make a good fit");
 }
 
 }  // namespace

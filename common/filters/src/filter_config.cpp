@@ -70,6 +70,9 @@ void readAlignment(const YamlSection& parent, FrameAlignmentParams& a) {
   s.requireRange("max_rms", a.max_rms, 0.0, 1.0, "0-1 (m)");
   s.requireRange("min_rms_gain", a.min_rms_gain, 0.0, 1.0, "0-1 (m)");
   s.requireRange("max_fit_points", a.max_fit_points, 0, 1e6, "an integer >= 0 (0: every point)");
+  if (a.max_fit_points != 0 && a.max_fit_points < a.min_matches)
+    s.fail("max_fit_points", "must be 0 (every point) or at least min_matches (" + std::to_string(a.min_matches) +
+                                 "): fewer points could never make a good fit");
   s.rejectUnknownKeys();
 }
 

@@ -115,14 +115,15 @@ void FrameAligner::thinToMaxFitPoints() {
   const auto max_points = static_cast<std::size_t>(params_.max_fit_points);
   const std::size_t n = with_normal_points_.size();
   if (max_points == 0 || n <= max_points) return;
-  const std::size_t stride = (n + max_points - 1) / max_points;  // every stride-th: at most max_points
-  std::size_t kept = 0;
-  for (std::size_t k = 0; k < n; k += stride, ++kept) {
-    with_normal_points_[kept] = with_normal_points_[k];
-    normals_[kept] = normals_[k];
+  // max_points of them spread evenly over the scan: the k-th kept is k·n/max
+  // (increasing, so copying in place never overwrites one still to come).
+  for (std::size_t k = 0; k < max_points; ++k) {
+    const std::size_t from = k * n / max_points;
+    with_normal_points_[k] = with_normal_points_[from];
+    normals_[k] = normals_[from];
   }
-  with_normal_points_.resize(kept);
-  normals_.resize(kept);
+  with_normal_points_.resize(max_points);
+  normals_.resize(max_points);
 }
 
 int FrameAligner::matchPoints(const Eigen::Isometry2d& correction) {

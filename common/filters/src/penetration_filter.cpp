@@ -108,7 +108,9 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
 int PenetrationFilter::edgeHalfWidthBeams(const Scan& scan) const {
   const double step_deg = std::abs(scan.angle_increment) * 180.0 / std::numbers::pi;
   if (params_.edge_vote_margin_deg <= 0.0 || !(step_deg > 0.0)) return 0;
-  return static_cast<int>(std::ceil(params_.edge_vote_margin_deg / step_deg - 1e-9));
+  // At least one beam; at most the scan (a tiny step must not overflow the int).
+  const double beams = std::ceil(params_.edge_vote_margin_deg / step_deg - 1e-9);
+  return static_cast<int>(std::clamp(beams, 1.0, static_cast<double>(scan.size())));
 }
 
 void PenetrationFilter::judge(const Scan& scan, const SensorInfo& sensor,
@@ -230,8 +232,11 @@ bool FastPenetrationFilter::isMisdetected(const Eigen::Vector2d& r, const Eigen:
   if (length <= 0.0) return false;
   // Penetrating cells project onto the beam between r and the reach; the
   // slack keeps the walk a superset whatever the rounding.
-  const double reach = rule_.reachAlongBeam(length, own_sq) + detail::kBoundSlack;
+  double reach = rule_.reachAlongBeam(length, own_sq) + detail::kBoundSlack;
   if (reach <= 0.0) return false;
+  // At least a cell: the walk's slope comes from end - r, which must not be
+  // a vector of rounding errors (walking farther only adds cells to test).
+  reach = std::max(reach, grid_.cellSize());
   const Eigen::Vector2d end = r + v * (reach / length);
   evidence_along_beam_.reset();
   return window_.anyAlongRay(r, end, rule_.outerHalfWidth() + positionSlack(), [&](CellIndex, const Eigen::Vector2d& q) {

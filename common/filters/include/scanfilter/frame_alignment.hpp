@@ -38,7 +38,8 @@ struct FrameAlignmentParams {
   // already fits keeps its pose.
   double min_rms_gain = 0.003;
   // At most this many points with a surface direction take part in the fit
-  // (every k-th of them when there are more; 0: all). Three unknowns need few
+  // (spread evenly over the scan when there are more; 0: all; else at least
+  // min_matches, or no fit could be good). Three unknowns need few
   // points; beyond a few hundred they add cost (a 3,600-beam scan has ten
   // times those of a 360-beam one) but not accuracy.
   int max_fit_points = 720;
@@ -83,7 +84,7 @@ class FrameAligner {
   // with the answer sure to stay the same (0 when nothing is sure).
   const Eigen::Vector2d* nearestObstacle(const Eigen::Vector2d& p, double* unchanged_within) const;
   void findNormals(std::span<const Eigen::Vector2d> points, const std::vector<bool>& usable);
-  // Keeps every k-th point with a direction so that at most max_fit_points remain.
+  // Keeps max_fit_points of the points with a direction, spread evenly.
   void thinToMaxFitPoints();
   int matchPoints(const Eigen::Isometry2d& correction);
   // Gauss-Newton from no correction until it converges or max_iterations;
