@@ -40,9 +40,10 @@ struct PenetrationFilterParams {
   double pose_jump_reset = 0.5;     // m, a larger sensor jump between frames resets the cache
   std::size_t max_cache_frames = 40;  // bound on cached frames whatever T_max says: obs_th counts over them (config/filter.yaml)
   bool cache_misdetected_points = false;  // misdetected points vote in later grids
-  // Beyond the paper (depth_edges.hpp): returns within this angle of a
-  // return more than `edge_depth_step` farther do not vote: at an edge they
-  // are mixed returns that smear it outwards. 0: every return votes.
+  // Beyond the paper (depth_edges.hpp): returns within this angle (at least
+  // one beam) of a kept return more than `edge_depth_step` farther do not
+  // vote: at an edge they are mixed returns that smear it outwards. 0: every
+  // return votes (the default: on the simulator it costs ghost recall).
   double edge_vote_margin_deg = 0.0;  // degrees
   double edge_depth_step = 0.15;      // m
   // Beyond the paper (docs/accuracy.md): step 1 deletes every cluster of one
