@@ -123,6 +123,7 @@ void report(const std::vector<std::string>& configs, const std::vector<std::stri
     }
   }
 }
+
 }  // namespace
 
 int main(int argc, char** argv) {

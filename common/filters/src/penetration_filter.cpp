@@ -14,9 +14,9 @@
 namespace scanfilter {
 
 namespace {
-// The far side of a depth edge that counts: returns this frame keeps. Behind
-// a mirror or a pane the farther returns are ghosts, already judged, and the
-// pane's own returns next to them must still vote.
+// The far side of a depth edge that counts: returns this frame keeps. Ghosts
+// behind a mirror or a pane that this frame has marked do not silence the
+// pane's own returns next to them.
 std::vector<bool> keptReturns(std::span<const std::uint8_t> labels) {
   std::vector<bool> kept(labels.size());
   for (std::size_t i = 0; i < labels.size(); ++i) kept[i] = labels[i] == static_cast<std::uint8_t>(PointCode::kValid);
@@ -68,12 +68,16 @@ void PenetrationFilter::expireFrames(Stamp stamp) {
 
 void PenetrationFilter::cacheFrame(const Scan& scan, std::span<const std::uint8_t> labels) {
   CachedFrame frame{scan.stamp, {}, {}};
-  const std::vector<bool> edge = nearSideOfDepthEdge(scan, keptReturns(labels), edgeHalfWidthBeams(scan),
-                                                     params_.edge_depth_step);
+  // Only with the switch on: every frame goes through here.
+  const int edge_beams = edgeHalfWidthBeams(scan);
+  const std::vector<bool> edge =
+      edge_beams > 0 ? nearSideOfDepthEdge(scan, keptReturns(labels), edge_beams, params_.edge_depth_step)
+                     : std::vector<bool>{};
   for (std::size_t i = 0; i < labels.size(); ++i) {
     const auto code = static_cast<PointCode>(labels[i]);
     if (code == PointCode::kNoReturn) continue;
-    const bool votes = !edge[i] && (code == PointCode::kValid ||
+    const bool at_edge = !edge.empty() && edge[i];
+    const bool votes = !at_edge && (code == PointCode::kValid ||
                                     (code == PointCode::kMisdetected && params_.cache_misdetected_points));
     if (votes) {
       frame.points.push_back(points_[i]);
