@@ -151,11 +151,7 @@ PenetrationFilter::Judgement PenetrationFilter::alignAndJudge(const Scan& scan, 
 void PenetrationFilter::judgePoints(const Eigen::Vector2d& origin, std::span<std::uint8_t> labels) {
   if (params_.rescue_persistent_points) rescuePersistentPoints(labels);
   prepareJudging(origin);
-  for (std::size_t i = 0; i < labels.size(); ++i) {
-    if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid)) continue;
-    if (isMisdetected(origin, points_[i], ownMarginSq(origin, i)))
-      labels[i] = static_cast<std::uint8_t>(PointCode::kMisdetected);
-  }
+  markMisdetected(origin, labels);
 }
 
 double PenetrationFilter::ownMarginSq(const Eigen::Vector2d& origin, std::size_t i) const {
@@ -210,6 +206,14 @@ void ReferencePenetrationFilter::prepareJudging(const Eigen::Vector2d& /*origin*
                          [this](CellIndex c, int) { obstacles_.push_back(obstaclePosition(c)); });
 }
 
+void ReferencePenetrationFilter::markMisdetected(const Eigen::Vector2d& origin, std::span<std::uint8_t> labels) {
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid)) continue;
+    if (isMisdetected(origin, points_[i], ownMarginSq(origin, i)))
+      labels[i] = static_cast<std::uint8_t>(PointCode::kMisdetected);
+  }
+}
+
 bool ReferencePenetrationFilter::isMisdetected(const Eigen::Vector2d& r, const Eigen::Vector2d& p,
                                                double own_sq) {
   evidence_along_beam_.reset();
@@ -230,22 +234,85 @@ void FastPenetrationFilter::prepareJudging(const Eigen::Vector2d& origin) {
                 [this](CellIndex c) { return obstaclePosition(c); });
 }
 
-bool FastPenetrationFilter::isMisdetected(const Eigen::Vector2d& r, const Eigen::Vector2d& p, double own_sq) {
-  const Eigen::Vector2d v = p - r;
+std::optional<FastPenetrationFilter::Beam> FastPenetrationFilter::beamOf(const Eigen::Vector2d& origin,
+                                                                        std::size_t i) const {
+  const Eigen::Vector2d v = points_[i] - origin;
   const double length = v.norm();
-  if (length <= 0.0) return false;
-  // Penetrating cells project onto the beam between r and the reach; the
-  // slack keeps the walk a superset whatever the rounding.
+  if (!std::isfinite(length) || length <= 0.0) return std::nullopt;
+  const double own_sq = ownMarginSq(origin, i);
+  // Penetrating cells project onto the beam between the sensor and the
+  // reach; the slack keeps the walk a superset whatever the rounding.
   double reach = rule_.reachAlongBeam(length, own_sq) + detail::kBoundSlack;
-  if (reach <= 0.0) return false;
-  // At least a cell: the walk's slope comes from end - r, which must not be
-  // a vector of rounding errors (walking farther only adds cells to test).
+  if (reach <= 0.0) return std::nullopt;
+  // At least a cell: the walk's slope comes from its end minus the origin,
+  // which must not be a vector of rounding errors (walking farther only adds
+  // cells to test).
   reach = std::max(reach, grid_.cellSize());
-  const Eigen::Vector2d end = r + v * (reach / length);
+  return Beam{i, own_sq, BundledBeam{v / length, reach}};
+}
+
+void FastPenetrationFilter::markMisdetected(const Eigen::Vector2d& origin, std::span<std::uint8_t> labels) {
+  bundle_.clear();
+  bundle_walks_.clear();
+  double max_reach = 0.0;
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid)) continue;
+    const std::optional<Beam> beam = beamOf(origin, i);
+    if (!beam) continue;
+    const double reach = std::max(max_reach, beam->walk.reach);
+    const bool fits = !bundle_.empty() && bundle_.size() < kMaxBundleBeams &&
+                      fanSpread(bundle_walks_.front(), beam->walk, reach) <= maxExtraBundleWidth();
+    if (!fits) {  // judge the bundle so far, start the next with this beam
+      judgeBundle(origin, labels);
+      max_reach = 0.0;
+    }
+    max_reach = std::max(max_reach, beam->walk.reach);
+    bundle_walks_.push_back(beam->walk);
+    bundle_.push_back(*beam);
+  }
+  judgeBundle(origin, labels);
+}
+
+void FastPenetrationFilter::judgeBundle(const Eigen::Vector2d& origin, std::span<std::uint8_t> labels) {
+  if (bundle_.empty()) return;
+  // Exact, whatever order the beams came in; only a bundle fanning out past
+  // 120° has none, and then each beam walks alone.
+  const std::optional<BundleBand> band = bundleBand(bundle_walks_, walkHalfWidth());
+  if (bundle_.size() == 1 || !band) {
+    for (const Beam& beam : bundle_)
+      if (walkAlone(origin, beam)) labels[beam.index] = static_cast<std::uint8_t>(PointCode::kMisdetected);
+  } else {
+    bundle_cells_.clear();
+    window_.anyAlongRay(origin, origin + band->axis * band->length, band->half_width,
+                        [this](CellIndex, const Eigen::Vector2d& q) {
+                          bundle_cells_.push_back(q);
+                          return false;
+                        });
+    for (const Beam& beam : bundle_)
+      if (!bundle_cells_.empty() && isMisdetected(origin, beam, bundle_cells_))
+        labels[beam.index] = static_cast<std::uint8_t>(PointCode::kMisdetected);
+  }
+  bundle_.clear();
+  bundle_walks_.clear();
+}
+
+bool FastPenetrationFilter::walkAlone(const Eigen::Vector2d& origin, const Beam& beam) {
+  // Stops at the first conclusive cell.
   evidence_along_beam_.reset();
-  return window_.anyAlongRay(r, end, rule_.outerHalfWidth() + positionSlack(), [&](CellIndex, const Eigen::Vector2d& q) {
-    return evidence_along_beam_.add(rule_.evidence(r, p, q, own_sq), q);
+  const Eigen::Vector2d end = origin + beam.walk.unit * beam.walk.reach;
+  return window_.anyAlongRay(origin, end, walkHalfWidth(), [&](CellIndex, const Eigen::Vector2d& q) {
+    return evidence_along_beam_.add(rule_.evidence(origin, points_[beam.index], q, beam.own_sq), q);
   });
+}
+
+bool FastPenetrationFilter::isMisdetected(const Eigen::Vector2d& origin, const Beam& beam,
+                                          std::span<const Eigen::Vector2d> cells) {
+  // The evidence does not depend on the order of the cells, so testing the
+  // bundle's cells in walk order gives the beam's own walk's answer.
+  evidence_along_beam_.reset();
+  for (const auto& q : cells)
+    if (evidence_along_beam_.add(rule_.evidence(origin, points_[beam.index], q, beam.own_sq), q)) return true;
+  return false;
 }
 
 std::unique_ptr<PenetrationFilter> makePenetrationFilter(const PenetrationFilterParams& params,

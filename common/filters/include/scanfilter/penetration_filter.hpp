@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include "scanfilter/beam_bundle.hpp"
 #include "scanfilter/frame_alignment.hpp"
 #include "scanfilter/implementation.hpp"
 #include "scanfilter/obstacle_window.hpp"
@@ -55,12 +56,13 @@ class PenetrationFilter {
   bool warmedUp() const { return frames_seen_ >= static_cast<std::size_t>(params_.min_frames); }
 
  protected:
-  // Called once per judged frame, before the first isMisdetected(); points_
-  // then holds the frame's world points.
+  // Called once per judged frame, before markMisdetected(); points_ then
+  // holds the frame's world points.
   virtual void prepareJudging(const Eigen::Vector2d& /*origin*/) {}
-  // True when the beam from sensor r to p passes through an obstacle cell;
-  // cells within sqrt(own_sq) of p are p's own surface.
-  virtual bool isMisdetected(const Eigen::Vector2d& r, const Eigen::Vector2d& p, double own_sq) = 0;
+  // Marks kMisdetected every kValid point of points_ whose beam from `origin`
+  // passes through an obstacle cell; cells within sqrt(ownMarginSq) of a
+  // point are its own surface.
+  virtual void markMisdetected(const Eigen::Vector2d& origin, std::span<std::uint8_t> labels) = 0;
   // Squared own-surface margin of point i seen from `origin`: the configured
   // margin, grown for a beam grazing its surface (grazing_margin).
   double ownMarginSq(const Eigen::Vector2d& origin, std::size_t i) const;
@@ -125,21 +127,49 @@ class ReferencePenetrationFilter final : public PenetrationFilter {
 
  private:
   void prepareJudging(const Eigen::Vector2d& origin) override;
-  bool isMisdetected(const Eigen::Vector2d& r, const Eigen::Vector2d& p, double own_sq) override;
+  void markMisdetected(const Eigen::Vector2d& origin, std::span<std::uint8_t> labels) override;
+  // True when the beam from sensor r to p passes through an obstacle cell.
+  bool isMisdetected(const Eigen::Vector2d& r, const Eigen::Vector2d& p, double own_sq);
   std::vector<Eigen::Vector2d> obstacles_;
 };
 
-// Walks each beam through a dense snapshot of the obstacle cells within the
-// frame's reach, visiting only the cells of a thick ray around it: the cost
-// per point follows the beam's length, not the map.
+// Walks the beams through a dense snapshot of the obstacle cells within the
+// frame's reach, visiting only the cells of a thick ray around them: the cost
+// per point follows the beam's length, not the map. Neighbouring beams that
+// fit one band are walked together (beam_bundle.hpp).
 class FastPenetrationFilter final : public PenetrationFilter {
  public:
   using PenetrationFilter::PenetrationFilter;
 
  private:
+  struct Beam {
+    std::size_t index;  // into points_ and the labels
+    double own_sq;
+    BundledBeam walk;
+  };
   void prepareJudging(const Eigen::Vector2d& origin) override;
-  bool isMisdetected(const Eigen::Vector2d& r, const Eigen::Vector2d& p, double own_sq) override;
+  void markMisdetected(const Eigen::Vector2d& origin, std::span<std::uint8_t> labels) override;
+  // The walk of point i's beam from `origin`; nullopt when no cell can be evidence.
+  std::optional<Beam> beamOf(const Eigen::Vector2d& origin, std::size_t i) const;
+  // Judges the beams in bundle_ with one walk and empties it.
+  void judgeBundle(const Eigen::Vector2d& origin, std::span<std::uint8_t> labels);
+  // The beam judged by its own walk.
+  bool walkAlone(const Eigen::Vector2d& origin, const Beam& beam);
+  // The beam judged against `cells`, a superset of the obstacle positions its own walk would visit.
+  bool isMisdetected(const Eigen::Vector2d& origin, const Beam& beam, std::span<const Eigen::Vector2d> cells);
+  // Half width of one beam's walk: off the beam by the straddle (or
+  // corridor) and by how far an obstacle's position can sit from its cell centre.
+  double walkHalfWidth() const { return rule_.outerHalfWidth() + positionSlack(); }
+  // How much wider than one beam's band a bundle's may grow, and how many
+  // beams it may hold: past either, the cells a bundle visits and tests cost
+  // more than the walks it saves (labels do not depend on them).
+  double maxExtraBundleWidth() const { return walkHalfWidth(); }
+  static constexpr std::size_t kMaxBundleBeams = 32;
+
   ObstacleWindow window_;
+  std::vector<Beam> bundle_;
+  std::vector<BundledBeam> bundle_walks_;
+  std::vector<Eigen::Vector2d> bundle_cells_;  // obstacle positions in the bundle's band
 };
 
 std::unique_ptr<PenetrationFilter> makePenetrationFilter(const PenetrationFilterParams& params,
