@@ -5,7 +5,12 @@
 // of a tour of 100 m² or 1,000 m² of rooms (T_max = ∞), so the reference's
 // obstacle set grows with the area while the fast beam walk should not. The
 // judged frame is taken in the corner room both areas share.
+// Step 2 as a service runs it: every frame of a hall tour through apply()
+// (expiry, alignment, judging, caching) at 360 and 3,600 beams, with the
+// CPU caches warm or cold (64 MB of other data read between frames, as the
+// other processes and the 25 ms between scans leave them).
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <utility>
@@ -13,11 +18,13 @@
 
 #include <benchmark/benchmark.h>
 
+#include "scanfilter/filter_config.hpp"
 #include "scanfilter/jump_filter.hpp"
 #include "scanfilter/off_surface_check.hpp"
 #include "scanfilter/penetration_filter.hpp"
 #include "scanfilter/point_code.hpp"
 #include "scanfilter/sim/scan_simulator.hpp"
+#include "scanfilter/sim/sensor_preset.hpp"
 
 using namespace scanfilter;
 
@@ -25,6 +32,11 @@ namespace {
 
 constexpr double kRoomSide = 5.0;
 constexpr double kDoorWidth = 1.0;
+// The stream benchmark's tour (frames), and what is read between its frames
+// to leave the caches cold: twice the L3 here (32 MB, shared with whatever
+// else runs on the host; in the services the scans come 25 ms apart).
+constexpr std::size_t kStreamFrames = 400;
+constexpr std::size_t kEvictionBytes = 64u << 20;
 
 Scan simulatedFrame(sim::Scene scene, int beams, int frame) {
   scene.lidar.beams = beams;
@@ -159,6 +171,65 @@ void BM_PenetrationJudge(benchmark::State& state, Implementation impl) {
   state.counters["grid_MB"] = static_cast<double>(s.filter->grid().memoryBytes()) / 1e6;
 }
 
+// Frames of the hall at `beams` with step 1's labels (what step 2 is given
+// in the pipeline), and the resolved step-2 parameters for that sensor
+// (obs_th follows the angular step), built once per beam count.
+struct HallTour {
+  SensorInfo sensor;
+  PenetrationFilterParams params;
+  std::vector<Scan> frames;
+  std::vector<std::vector<std::uint8_t>> step1_labels;
+};
+
+const HallTour& hallTour(int beams) {
+  static std::map<int, HallTour> tours;
+  HallTour& tour = tours[beams];
+  if (!tour.frames.empty()) return tour;
+  sim::ScanSimulator simulator(sim::sceneWithSensor("hall", "", beams), 2);
+  tour.sensor = simulator.header().sensor;
+  const TwoStepFilterParams params = FilterConfig{}.resolve(tour.sensor);
+  tour.params = params.penetration;
+  auto jump = makeJumpFilter(params.jump, Implementation::kFast);
+  ScanRecord record;
+  while (tour.frames.size() < kStreamFrames && simulator.next(record)) {
+    std::vector<std::uint8_t> labels(record.scan.size());
+    jump->apply(record.scan, tour.sensor, labels);
+    tour.frames.push_back(record.scan);
+    tour.step1_labels.push_back(std::move(labels));
+  }
+  return tour;
+}
+
+// Reads `kEvictionBytes` so that what step 2 left in the caches is gone.
+void evictCaches() {
+  static std::vector<std::uint64_t> other(kEvictionBytes / sizeof(std::uint64_t), 1);
+  std::uint64_t sum = 0;
+  for (std::size_t i = 0; i < other.size(); i += 8) sum += other[i]++;  // one touch a cache line
+  benchmark::DoNotOptimize(sum);
+}
+
+void BM_PenetrationStream(benchmark::State& state) {
+  const int beams = static_cast<int>(state.range(0));
+  const bool cold = state.range(1) != 0;
+  const HallTour& tour = hallTour(beams);
+  auto filter = makePenetrationFilter(tour.params, Implementation::kFast);
+  std::vector<std::uint8_t> labels;
+  std::size_t next = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    if (next == tour.frames.size()) {  // around again: a fresh cache, as after a relocalisation
+      filter->reset();
+      next = 0;
+    }
+    labels = tour.step1_labels[next];
+    if (cold) evictCaches();
+    state.ResumeTiming();
+    filter->apply(tour.frames[next++], tour.sensor, labels);
+    benchmark::DoNotOptimize(labels.data());
+  }
+  state.counters["beams"] = beams;
+}
+
 }  // namespace
 
 BENCHMARK_CAPTURE(BM_JumpFilter, reference, Implementation::kReference)->Arg(360)->Arg(1080)->Arg(3600)->Unit(benchmark::kMicrosecond);
@@ -168,5 +239,7 @@ BENCHMARK_CAPTURE(BM_PenetrationJudge, reference, Implementation::kReference)
     ->ArgsProduct({{360, 1080, 3600}, {100, 1000}})->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_PenetrationJudge, fast, Implementation::kFast)
     ->ArgsProduct({{360, 1080, 3600}, {100, 1000}})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PenetrationStream)->ArgsProduct({{360, 3600}, {0, 1}})->ArgNames({"beams", "cold"})
+    ->Unit(benchmark::kMicrosecond);
 
 BENCHMARK_MAIN();

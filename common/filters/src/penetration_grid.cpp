@@ -25,7 +25,7 @@ Eigen::Vector2d PenetrationGrid::centroid(CellIndex c) const {
   return tile->sums[index] / static_cast<double>(tile->counts[index]);
 }
 
-PenetrationGrid::Tile& PenetrationGrid::tileForChange(std::uint64_t key, int delta) {
+PenetrationGrid::Tile& PenetrationGrid::tileForChange(std::uint64_t key, [[maybe_unused]] int delta) {
   // A frame's points come in scan order: most fall in the tile of the one before.
   if (change_tile_ != nullptr && key == change_key_) return *change_tile_;
   auto it = tiles_.find(key);
