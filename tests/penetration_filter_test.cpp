@@ -196,6 +196,7 @@ TEST(PenetrationFilter, RescueRestoresPersistentJumpPoints) {
   const SensorInfo sensor = test::simpleSensor();
   PenetrationFilterParams p;
   p.rescue_persistent_points = true;
+  p.rescue_min_baseline = 0.0;  // every cached frame vouches (the baseline: the test below)
   auto filter = makePenetrationFilter(p, Implementation::kFast);
   const World legs = World{kRoom}.leg({1.0, 0.0}, 0.015);
   std::vector<std::uint8_t> labels;
@@ -212,6 +213,48 @@ TEST(PenetrationFilter, RescueRestoresPersistentJumpPoints) {
   const std::size_t leg = test::beamTowards(last, sensor, 0.0);
   ASSERT_LT(last.ranges[leg], 1.1);
   EXPECT_EQ(labels[leg], kValid) << "the leg, seen in every frame, is restored";
+}
+
+// A leg 1 m ahead that step 1 calls jump in every frame (10 Hz), the sensor
+// backing away `step` m a frame: the leg's label in the last of `frames`,
+// the same from both implementations.
+std::uint8_t legLabelAfter(const PenetrationFilterParams& p, double step, int frames) {
+  const SensorInfo sensor = test::simpleSensor();
+  auto reference = makePenetrationFilter(p, Implementation::kReference);
+  auto fast = makePenetrationFilter(p, Implementation::kFast);
+  const World legs = World{kRoom}.leg({1.0, 0.0}, 0.03);
+  std::vector<std::uint8_t> ref, fst;
+  std::size_t leg = 0;
+  for (int k = 0; k < frames; ++k) {
+    const Scan scan = castScan(legs, {-step * k, 0.0, 0.0}, sensor, 360, 0.1 * k);
+    leg = test::beamTowards(scan, sensor, 0.0);
+    fst.assign(scan.size(), kValid);
+    for (std::size_t i = 0; i < scan.size(); ++i) {
+      if (!scan.hasReturn(i)) fst[i] = static_cast<std::uint8_t>(PointCode::kNoReturn);
+      else if (scan.ranges[i] < 1.0 + step * k + 0.1) fst[i] = static_cast<std::uint8_t>(PointCode::kJump);
+    }
+    ref = fst;
+    reference->apply(scan, sensor, ref);
+    fast->apply(scan, sensor, fst);
+    EXPECT_EQ(ref, fst) << "frame " << k;
+  }
+  return fst[leg];
+}
+
+TEST(PenetrationFilter, RescueWithABaselineNeedsTheLegSeenFromElsewhereOrForLong) {
+  PenetrationFilterParams p;
+  p.rescue_min_baseline = 0.25;
+  p.rescue_baseline_max_wait = 1.0;
+  constexpr auto kJump = static_cast<std::uint8_t>(PointCode::kJump);
+  // Standing still for 0.7 s: the leg could be a mixed return that follows the viewpoint.
+  EXPECT_EQ(legLabelAfter(p, 0.0, 8), kJump);
+  // ... for 1.5 s: the frames older than the wait vouch for it.
+  EXPECT_EQ(legLabelAfter(p, 0.0, 16), kValid);
+  // Backing away 5 cm a frame: by 0.9 s the first frames were taken 0.25 m+ away.
+  EXPECT_EQ(legLabelAfter(p, 0.05, 10), kValid);
+  // Without the baseline, the frames vouch at once.
+  p.rescue_min_baseline = 0.0;
+  EXPECT_EQ(legLabelAfter(p, 0.0, 8), kValid);
 }
 
 // Valid returns (truth) that step 2 marks misdetected although their beam

@@ -57,17 +57,23 @@ void PenetrationFilter::resetOnPoseJump(const Eigen::Vector2d& origin, Stamp sta
 void PenetrationFilter::expireFrames(Stamp stamp) {
   while (!cache_.empty() && (stamp.secondsSince(cache_.front().stamp) > params_.frame_lifetime ||
                              cache_.size() >= params_.max_cache_frames)) {
+    const bool in_evidence = cache_.front().in_evidence;
     for (const auto& p : cache_.front().points) {
       grid_.remove(p);
-      if (params_.rescue_persistent_points) evidence_.remove(p);
+      if (in_evidence) evidence_.remove(p);
     }
-    for (const auto& p : cache_.front().others) evidence_.remove(p);
+    if (in_evidence)
+      for (const auto& p : cache_.front().others) evidence_.remove(p);
     cache_.pop_front();
   }
 }
 
-void PenetrationFilter::cacheFrame(const Scan& scan, std::span<const std::uint8_t> labels) {
-  CachedFrame frame{scan.stamp, {}, {}};
+void PenetrationFilter::cacheFrame(const Scan& scan, const Eigen::Vector2d& origin,
+                                   std::span<const std::uint8_t> labels) {
+  // Without a baseline the frame's returns are evidence at once, added here
+  // in scan order; with one, admitEvidence adds them later.
+  const bool evidence_now = params_.rescue_persistent_points && !evidenceWaitsForBaseline();
+  CachedFrame frame{scan.stamp, origin, {}, {}, evidence_now};
   // Only with the switch on: every frame goes through here.
   const int edge_beams = edgeHalfWidthBeams(scan);
   const std::vector<bool> edge =
@@ -85,9 +91,21 @@ void PenetrationFilter::cacheFrame(const Scan& scan, std::span<const std::uint8_
     } else if (params_.rescue_persistent_points) {
       frame.others.push_back(points_[i]);
     }
-    if (params_.rescue_persistent_points) evidence_.add(points_[i]);
+    if (evidence_now) evidence_.add(points_[i]);
   }
   cache_.push_back(std::move(frame));
+}
+
+void PenetrationFilter::admitEvidence(const Eigen::Vector2d& origin, Stamp stamp) {
+  const double baseline_sq = params_.rescue_min_baseline * params_.rescue_min_baseline;
+  for (auto& frame : cache_) {
+    if (frame.in_evidence) continue;
+    const bool seen_from_elsewhere = (frame.origin - origin).squaredNorm() >= baseline_sq;
+    if (!seen_from_elsewhere && stamp.secondsSince(frame.stamp) < params_.rescue_baseline_max_wait) continue;
+    for (const auto& p : frame.points) evidence_.add(p);
+    for (const auto& p : frame.others) evidence_.add(p);
+    frame.in_evidence = true;
+  }
 }
 
 void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
@@ -96,9 +114,11 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
   // no return whatever they say, or its NaN point would enter the grid.
   for (std::size_t i = 0; i < labels.size(); ++i)
     if (!scan.hasReturn(i)) labels[i] = static_cast<std::uint8_t>(PointCode::kNoReturn);
-  resetOnPoseJump(sensorOrigin(scan.pose, sensor.mount), scan.stamp);
+  const Eigen::Vector2d origin = sensorOrigin(scan.pose, sensor.mount);
+  resetOnPoseJump(origin, scan.stamp);
   ++frames_seen_;
   expireFrames(scan.stamp);
+  if (evidenceWaitsForBaseline()) admitEvidence(origin, scan.stamp);
   if (warmedUp()) {
     const Judgement judgement = alignAndJudge(scan, sensor, labels);
     correction_ = judgement.correction;
@@ -106,7 +126,7 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
   } else {
     placeFrame(scan, sensor);
   }
-  cacheFrame(scan, labels);  // where the alignment put it: the cache stays self-consistent
+  cacheFrame(scan, origin, labels);  // where the alignment put it: the cache stays self-consistent
 }
 
 int PenetrationFilter::edgeHalfWidthBeams(const Scan& scan) const {

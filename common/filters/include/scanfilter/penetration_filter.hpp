@@ -87,8 +87,10 @@ class PenetrationFilter {
  private:
   struct CachedFrame {
     Stamp stamp;
+    Eigen::Vector2d origin;               // the sensor's position (odometry)
     std::vector<Eigen::Vector2d> points;  // vote in grid_
     std::vector<Eigen::Vector2d> others;  // the other returns, in evidence_ only
+    bool in_evidence = false;             // its returns are in evidence_ (rescue_min_baseline)
   };
   // Where a frame lies: points_ under the pose and the running correction;
   // returns the sensor origin there.
@@ -103,7 +105,13 @@ class PenetrationFilter {
   int evidenceAround(const Eigen::Vector2d& p) const;
   void resetOnPoseJump(const Eigen::Vector2d& origin, Stamp stamp);
   void expireFrames(Stamp stamp);
-  void cacheFrame(const Scan& scan, std::span<const std::uint8_t> labels);
+  void cacheFrame(const Scan& scan, const Eigen::Vector2d& origin, std::span<const std::uint8_t> labels);
+  // With rescue_min_baseline: the cached frames taken at least that far from
+  // `origin`, or at least rescue_baseline_max_wait before `stamp`, join the evidence.
+  void admitEvidence(const Eigen::Vector2d& origin, Stamp stamp);
+  bool evidenceWaitsForBaseline() const {
+    return params_.rescue_persistent_points && params_.rescue_min_baseline > 0.0;
+  }
   // Beams either side of a return within edge_vote_margin_deg (0: off).
   int edgeHalfWidthBeams(const Scan& scan) const;
 

@@ -57,6 +57,16 @@ struct PenetrationFilterParams {
   // this distance of the point: a thin leg's returns pile up within a few cm,
   // a jump point lies off every surface by more than that.
   double rescue_radius = 0.08;  // m
+  // Evidence counts only the cached frames seen from at least this far from
+  // where the point is seen now (sensor origins, m): a real surface is hit
+  // again from elsewhere, a mixed return or a displaced one follows the
+  // viewpoint, and a fast scanner's last frames share nearly one viewpoint.
+  // A frame joins the evidence once the sensor is this far from where it
+  // was taken, or `rescue_baseline_max_wait` after it was taken: a robot
+  // standing still has no parallax to tell a thin leg from a mixed return,
+  // and keeps both, as without the baseline. 0: every cached frame counts at once (the paper has no rescue at all).
+  double rescue_min_baseline = 0.25;     // m
+  double rescue_baseline_max_wait = 1.0;  // s
   // Beyond the paper: each frame is fitted to the cache before it is judged
   // (frame_alignment.hpp); a frame that does not fit is not judged.
   FrameAlignmentParams alignment;
