@@ -13,7 +13,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   # DDS services (issue 3 and later)
   libfastrtps-dev libfastcdr-dev fastddsgen fastdds-tools prometheus-cpp-dev
-  cyclonedds-dev cyclonedds-tools prometheus iproute2 util-linux curl
+  cyclonedds-dev cyclonedds-tools prometheus iproute2 util-linux curl tcpdump
   # systemd units and the .deb (issue 11): sd_notify, systemd-analyze,
   # dpkg-shlibdeps for cpack's dependency list, the notify test, the
   # system-call filter test
