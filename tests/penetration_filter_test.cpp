@@ -215,10 +215,11 @@ TEST(PenetrationFilter, RescueRestoresPersistentJumpPoints) {
   EXPECT_EQ(labels[leg], kValid) << "the leg, seen in every frame, is restored";
 }
 
-// A leg 1 m ahead that step 1 calls jump in every frame (10 Hz), the sensor
-// backing away `step` m a frame: the leg's label in the last of `frames`,
-// the same from both implementations.
-std::uint8_t legLabelAfter(const PenetrationFilterParams& p, double step, int frames) {
+// A leg 1 m ahead of the first pose that step 1 calls jump in every frame
+// (10 Hz), there from frame `leg_from` on, the sensor backing away `step` m a
+// frame: the leg's label in the last of `frames`, the same from both
+// implementations.
+std::uint8_t legLabelAfter(const PenetrationFilterParams& p, double step, int frames, int leg_from = 0) {
   const SensorInfo sensor = test::simpleSensor();
   auto reference = makePenetrationFilter(p, Implementation::kReference);
   auto fast = makePenetrationFilter(p, Implementation::kFast);
@@ -226,7 +227,7 @@ std::uint8_t legLabelAfter(const PenetrationFilterParams& p, double step, int fr
   std::vector<std::uint8_t> ref, fst;
   std::size_t leg = 0;
   for (int k = 0; k < frames; ++k) {
-    const Scan scan = castScan(legs, {-step * k, 0.0, 0.0}, sensor, 360, 0.1 * k);
+    const Scan scan = castScan(k >= leg_from ? legs : kRoom, {-step * k, 0.0, 0.0}, sensor, 360, 0.1 * k);
     leg = test::beamTowards(scan, sensor, 0.0);
     fst.assign(scan.size(), kValid);
     for (std::size_t i = 0; i < scan.size(); ++i) {
@@ -241,20 +242,21 @@ std::uint8_t legLabelAfter(const PenetrationFilterParams& p, double step, int fr
   return fst[leg];
 }
 
-TEST(PenetrationFilter, RescueWithABaselineNeedsTheLegSeenFromElsewhereOrForLong) {
+TEST(PenetrationFilter, RescueWithABaselineNeedsEvidenceFromElsewhere) {
   PenetrationFilterParams p;
   p.rescue_min_baseline = 0.25;
-  p.rescue_baseline_max_wait = 1.0;
   constexpr auto kJump = static_cast<std::uint8_t>(PointCode::kJump);
-  // Standing still for 0.7 s: the leg could be a mixed return that follows the viewpoint.
-  EXPECT_EQ(legLabelAfter(p, 0.0, 8), kJump);
-  // ... for 1.5 s: the frames older than the wait vouch for it.
-  EXPECT_EQ(legLabelAfter(p, 0.0, 16), kValid);
-  // Backing away 5 cm a frame: by 0.9 s the first frames were taken 0.25 m+ away.
-  EXPECT_EQ(legLabelAfter(p, 0.05, 10), kValid);
-  // Without the baseline, the frames vouch at once.
-  p.rescue_min_baseline = 0.0;
+  // Backing away 5 cm a frame, the leg there all along: the frames taken
+  // 0.25 m+ back vouch for it.
+  EXPECT_EQ(legLabelAfter(p, 0.05, 16), kValid);
+  // ... the leg there only for the last 5 frames, all within 0.25 m: what
+  // was seen from (nearly) one place only is not evidence.
+  EXPECT_EQ(legLabelAfter(p, 0.05, 16, 11), kJump);
+  // Standing still: no parallax anywhere in the cache, every frame vouches.
   EXPECT_EQ(legLabelAfter(p, 0.0, 8), kValid);
+  // Without the baseline, the last 5 frames vouch at once.
+  p.rescue_min_baseline = 0.0;
+  EXPECT_EQ(legLabelAfter(p, 0.05, 16, 11), kValid);
 }
 
 // Valid returns (truth) that step 2 marks misdetected although their beam

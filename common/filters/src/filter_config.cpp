@@ -105,7 +105,6 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.read("rescue_min_count", p.rescue_min_count);
   s.read("rescue_radius", p.rescue_radius);
   s.read("rescue_min_baseline", p.rescue_min_baseline);
-  s.read("rescue_baseline_max_wait", p.rescue_baseline_max_wait);
   s.take("alignment");
   readAlignment(s, p.alignment);
   s.requireRange("cell_size", p.cell_size, 1e-3, 10.0, "0.001 <= value <= 10 (m)");
@@ -124,7 +123,6 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.requireRange("rescue_min_count", p.rescue_min_count, 1, 1e9, "an integer >= 1");
   s.requireRange("rescue_radius", p.rescue_radius, 0.0, 1.0, "0 <= value <= 1 (m)");
   s.requireRange("rescue_min_baseline", p.rescue_min_baseline, 0.0, 100.0, "0 <= value <= 100 (m; 0: off)");
-  s.requireRange("rescue_baseline_max_wait", p.rescue_baseline_max_wait, 0.0, 1e9, "a value >= 0 (s)");
   s.requireRange("edge_vote_margin_deg", p.edge_vote_margin_deg, 0.0, 45.0, "0 <= value <= 45 (degrees; 0: off)");
   s.requireRange("edge_depth_step", p.edge_depth_step, 0.0, 10.0, "0 <= value <= 10 (m)");
   s.rejectUnknownKeys();

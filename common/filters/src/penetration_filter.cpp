@@ -96,12 +96,13 @@ void PenetrationFilter::cacheFrame(const Scan& scan, const Eigen::Vector2d& orig
   cache_.push_back(std::move(frame));
 }
 
-void PenetrationFilter::admitEvidence(const Eigen::Vector2d& origin, Stamp stamp) {
+void PenetrationFilter::admitEvidence(const Eigen::Vector2d& origin) {
   const double baseline_sq = params_.rescue_min_baseline * params_.rescue_min_baseline;
+  const auto far = [&](const CachedFrame& frame) { return (frame.origin - origin).squaredNorm() >= baseline_sq; };
+  // No parallax in the whole cache: nothing to tell a leg from a mixed return by.
+  const bool any_far = std::any_of(cache_.begin(), cache_.end(), far);
   for (auto& frame : cache_) {
-    if (frame.in_evidence) continue;
-    const bool seen_from_elsewhere = (frame.origin - origin).squaredNorm() >= baseline_sq;
-    if (!seen_from_elsewhere && stamp.secondsSince(frame.stamp) < params_.rescue_baseline_max_wait) continue;
+    if (frame.in_evidence || (any_far && !far(frame))) continue;
     for (const auto& p : frame.points) evidence_.add(p);
     for (const auto& p : frame.others) evidence_.add(p);
     frame.in_evidence = true;
@@ -118,7 +119,7 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
   resetOnPoseJump(origin, scan.stamp);
   ++frames_seen_;
   expireFrames(scan.stamp);
-  if (evidenceWaitsForBaseline()) admitEvidence(origin, scan.stamp);
+  if (evidenceWaitsForBaseline()) admitEvidence(origin);
   if (warmedUp()) {
     const Judgement judgement = alignAndJudge(scan, sensor, labels);
     correction_ = judgement.correction;

@@ -107,8 +107,8 @@ class PenetrationFilter {
   void expireFrames(Stamp stamp);
   void cacheFrame(const Scan& scan, const Eigen::Vector2d& origin, std::span<const std::uint8_t> labels);
   // With rescue_min_baseline: the cached frames taken at least that far from
-  // `origin`, or at least rescue_baseline_max_wait before `stamp`, join the evidence.
-  void admitEvidence(const Eigen::Vector2d& origin, Stamp stamp);
+  // `origin` join the evidence; all of them while none is.
+  void admitEvidence(const Eigen::Vector2d& origin);
   bool evidenceWaitsForBaseline() const {
     return params_.rescue_persistent_points && params_.rescue_min_baseline > 0.0;
   }

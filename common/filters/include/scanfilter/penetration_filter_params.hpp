@@ -62,11 +62,11 @@ struct PenetrationFilterParams {
   // again from elsewhere, a mixed return or a displaced one follows the
   // viewpoint, and a fast scanner's last frames share nearly one viewpoint.
   // A frame joins the evidence once the sensor is this far from where it
-  // was taken, or `rescue_baseline_max_wait` after it was taken: a robot
-  // standing still has no parallax to tell a thin leg from a mixed return,
-  // and keeps both, as without the baseline. 0: every cached frame counts at once (the paper has no rescue at all).
-  double rescue_min_baseline = 0.25;     // m
-  double rescue_baseline_max_wait = 1.0;  // s
+  // was taken. While no cached frame is (a robot standing still, turning on
+  // the spot or creeping), every cached frame counts: without parallax
+  // nothing tells a thin leg from a mixed return, and both are kept, as
+  // without the baseline. 0: every cached frame counts at once.
+  double rescue_min_baseline = 0.25;  // m
   // Beyond the paper: each frame is fitted to the cache before it is judged
   // (frame_alignment.hpp); a frame that does not fit is not judged.
   FrameAlignmentParams alignment;
