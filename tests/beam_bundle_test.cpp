@@ -3,6 +3,7 @@
 // beams, or a cell a beam's own walk would test is missed.
 #include "scanfilter/beam_bundle.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>

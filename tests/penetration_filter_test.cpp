@@ -259,6 +259,32 @@ TEST(PenetrationFilter, RescueWithABaselineNeedsEvidenceFromElsewhere) {
   EXPECT_EQ(legLabelAfter(p, 0.05, 16, 11), kValid);
 }
 
+// With the baseline, frames join the evidence late, or never: each return
+// must still leave it exactly once (a missed or a second removal leaves a
+// tile behind, its count wrapped).
+TEST(PenetrationFilter, EveryEvidenceReturnLeavesWithItsFrame) {
+  PenetrationFilterParams p;
+  p.rescue_min_baseline = 0.25;
+  const SensorInfo sensor = test::simpleSensor();
+  auto filter = makePenetrationFilter(p, Implementation::kFast);
+  std::vector<std::uint8_t> labels;
+  const auto feed = [&](double x, double t) {
+    const Scan scan = castScan(kRoom, {x, 0.0, 0.0}, sensor, 360, t);
+    labels.assign(scan.size(), kValid);
+    for (std::size_t i = 0; i < scan.size(); ++i) {
+      if (!scan.hasReturn(i)) labels[i] = static_cast<std::uint8_t>(PointCode::kNoReturn);
+      else if (i % 7 == 0) labels[i] = static_cast<std::uint8_t>(PointCode::kJump);  // returns that do not vote
+    }
+    filter->apply(scan, sensor, labels);
+  };
+  // 12 s at 10 Hz, 2 cm a frame out to 0.6 m and back, twice: frames expire
+  // by count and by age, some far from the sensor and some not.
+  for (int k = 0; k < 120; ++k) feed(0.02 * (k % 60 < 30 ? k % 60 : 60 - k % 60), 0.1 * k);
+  EXPECT_GT(filter->rescueEvidence().tileCount(), 0u) << "no frame ever joined the evidence";
+  feed(0.0, 200.0);  // every cached frame expires; the new one is not evidence yet
+  EXPECT_EQ(filter->rescueEvidence().tileCount(), 0u);
+}
+
 // Valid returns (truth) that step 2 marks misdetected although their beam
 // meets its surface beyond 80° incidence, over the first 1,000 scans of the
 // simulated home (seed 1, the tuning seed): where a triangulation sensor's

@@ -231,6 +231,15 @@ fi
 
 # The ingest publishes at ten times the recorded pace (1 s for the log), so
 # that the byte counters can be read again after discovery, around the data.
+# Every datagram on the edge's loopback from before the first scan to after
+# the last (headers only: the sizes are what is checked).
+start edge "$WORK/tcpdump.log" tcpdump -i lo -nn -U -s 64 -Z root -w "$WORK/edge_lo.pcap"
+TCPDUMP=$STARTED
+deadline=$((SECONDS + 10))
+until grep -q "listening on lo" "$WORK/tcpdump.log"; do
+  [ "$SECONDS" -lt "$deadline" ] || fail "tcpdump on the edge's loopback did not start: $(cat "$WORK/tcpdump.log")"
+  sleep 0.01
+done
 robot_tx0=$(counter robot eth0 tx) mapper_rx0=$(counter mapper eth0 rx)
 start robot "$WORK/ingest.log" timeout -k 5 90 "$BUILD/services/scan_ingest" --config "$WORK/ingest.yaml"
 INGEST=$STARTED
@@ -241,18 +250,9 @@ until grep -q "\[info\] started:" "$WORK/ingest.log"; do
   sleep 0.01
 done
 edge_lo0=$(counter edge lo tx) robot_data0=$(counter robot eth0 tx)
-# Every datagram on the edge's loopback while the scans flow (headers only:
-# the sizes are what is checked).
-start edge "$WORK/tcpdump.log" tcpdump -i lo -nn -U -s 64 -Z root -w "$WORK/edge_lo.pcap"
-TCPDUMP=$STARTED
-deadline=$((SECONDS + 10))
-until grep -q "listening on lo" "$WORK/tcpdump.log"; do
-  [ "$SECONDS" -lt "$deadline" ] || fail "tcpdump on the edge's loopback did not start: $(cat "$WORK/tcpdump.log")"
-  sleep 0.01
-done
 wait "$INGEST" || fail "scan_ingest on the robot exited non-zero"
 wait "$REC" || fail "the recorder on the mapper did not get $FRAMES scans"
-kill -INT "$TCPDUMP"
+kill -INT "$TCPDUMP" 2>/dev/null || true
 wait "$TCPDUMP" 2>/dev/null || true
 edge_lo=$(( $(counter edge lo tx) - edge_lo0 )) robot_data=$(( $(counter robot eth0 tx) - robot_data0 ))
 robot_tx=$(( $(counter robot eth0 tx) - robot_tx0 ))
@@ -282,7 +282,8 @@ echo "bytes while the scans flowed: robot eth0 sent $robot_data, edge loopback c
 # the robot sent failed there with no scan on the loopback), so sizes are
 # checked, not bytes.
 scan_bytes=$(( beams * 8 ))
-sizes=$(tcpdump -nn -r "$WORK/edge_lo.pcap" 2> /dev/null | sed -n 's/.* UDP, length \([0-9]*\)$/\1/p')
+# (|| true: a capture cut short mid-record still lists what it holds; an empty one fails below)
+sizes=$({ tcpdump -nn -r "$WORK/edge_lo.pcap" 2> /dev/null || true; } | sed -n 's/.* UDP, length \([0-9]*\)$/\1/p')
 datagrams=$(grep -c . <<<"$sizes" || true)
 large=$(awk -v min="$scan_bytes" '$1 >= min' <<<"$sizes" | grep -c . || true)
 largest=$(sort -n <<<"$sizes" | tail -n 1)

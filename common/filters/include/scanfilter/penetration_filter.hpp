@@ -45,6 +45,8 @@ class PenetrationFilter {
   void reset();
 
   const PenetrationGrid& grid() const { return grid_; }
+  // The returns the rescue counts (rescue_persistent_points).
+  const PenetrationGrid& rescueEvidence() const { return evidence_; }
   const PenetrationFilterParams& params() const { return params_; }
   std::size_t framesSinceReset() const { return frames_seen_; }
   std::size_t cachedFrames() const { return cache_.size(); }

@@ -63,9 +63,11 @@ struct PenetrationFilterParams {
   // viewpoint, and a fast scanner's last frames share nearly one viewpoint.
   // A frame joins the evidence once the sensor is this far from where it
   // was taken. While no cached frame is (a robot standing still, turning on
-  // the spot or creeping), every cached frame counts: without parallax
-  // nothing tells a thin leg from a mixed return, and both are kept, as
-  // without the baseline. 0: every cached frame counts at once.
+  // the spot or creeping, and the first metres after a start or a cache
+  // reset), every cached frame counts: without parallax nothing tells a thin
+  // leg from a mixed return, and both are kept, as without the baseline. A
+  // frame that joined stays until it expires, also when the robot comes
+  // back to where it was taken. 0: every cached frame counts at once.
   double rescue_min_baseline = 0.25;  // m
   // Beyond the paper: each frame is fitted to the cache before it is judged
   // (frame_alignment.hpp); a frame that does not fit is not judged.
