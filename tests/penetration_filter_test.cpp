@@ -32,10 +32,16 @@ class BothFilters {
       : reference_(makePenetrationFilter(p, Implementation::kReference)),
         fast_(makePenetrationFilter(p, Implementation::kFast)) {}
 
+  // Every return valid to start (step 1 found nothing).
   std::vector<std::uint8_t> apply(const Scan& scan, const SensorInfo& sensor) {
-    std::vector<std::uint8_t> ref(scan.size()), fast(scan.size());
+    std::vector<std::uint8_t> labels(scan.size());
     for (std::size_t i = 0; i < scan.size(); ++i)
-      ref[i] = fast[i] = scan.hasReturn(i) ? kValid : static_cast<std::uint8_t>(PointCode::kNoReturn);
+      labels[i] = scan.hasReturn(i) ? kValid : static_cast<std::uint8_t>(PointCode::kNoReturn);
+    return apply(scan, sensor, std::move(labels));
+  }
+  // Starting from step 1's `labels`.
+  std::vector<std::uint8_t> apply(const Scan& scan, const SensorInfo& sensor, std::vector<std::uint8_t> labels) {
+    std::vector<std::uint8_t> ref = labels, fast = std::move(labels);
     reference_->apply(scan, sensor, ref);
     fast_->apply(scan, sensor, fast);
     EXPECT_EQ(ref, fast) << "fast and reference disagree at stamp " << scan.stamp.toDecimal();
@@ -221,25 +227,21 @@ TEST(PenetrationFilter, RescueRestoresPersistentJumpPoints) {
 // implementations.
 std::uint8_t legLabelAfter(const PenetrationFilterParams& p, double step, int frames, int leg_from = 0) {
   const SensorInfo sensor = test::simpleSensor();
-  auto reference = makePenetrationFilter(p, Implementation::kReference);
-  auto fast = makePenetrationFilter(p, Implementation::kFast);
+  BothFilters filters(p);
   const World legs = World{kRoom}.leg({1.0, 0.0}, 0.03);
-  std::vector<std::uint8_t> ref, fst;
+  std::vector<std::uint8_t> labels;
   std::size_t leg = 0;
   for (int k = 0; k < frames; ++k) {
     const Scan scan = castScan(k >= leg_from ? legs : kRoom, {-step * k, 0.0, 0.0}, sensor, 360, 0.1 * k);
     leg = test::beamTowards(scan, sensor, 0.0);
-    fst.assign(scan.size(), kValid);
+    labels.assign(scan.size(), kValid);
     for (std::size_t i = 0; i < scan.size(); ++i) {
-      if (!scan.hasReturn(i)) fst[i] = static_cast<std::uint8_t>(PointCode::kNoReturn);
-      else if (scan.ranges[i] < 1.0 + step * k + 0.1) fst[i] = static_cast<std::uint8_t>(PointCode::kJump);
+      if (!scan.hasReturn(i)) labels[i] = static_cast<std::uint8_t>(PointCode::kNoReturn);
+      else if (scan.ranges[i] < 1.0 + step * k + 0.1) labels[i] = static_cast<std::uint8_t>(PointCode::kJump);
     }
-    ref = fst;
-    reference->apply(scan, sensor, ref);
-    fast->apply(scan, sensor, fst);
-    EXPECT_EQ(ref, fst) << "frame " << k;
+    labels = filters.apply(scan, sensor, labels);
   }
-  return fst[leg];
+  return labels[leg];
 }
 
 TEST(PenetrationFilter, RescueWithABaselineNeedsEvidenceFromElsewhere) {

@@ -280,9 +280,9 @@ void FastPenetrationFilter::markMisdetected(const Eigen::Vector2d& origin, std::
     if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid)) continue;
     const std::optional<Beam> beam = beamOf(origin, i);
     if (!beam) continue;
-    const double reach = std::max(max_reach, beam->walk.reach);
     const bool fits = !bundle_.empty() && bundle_.size() < kMaxBundleBeams &&
-                      fanSpread(bundle_walks_.front(), beam->walk, reach) <= maxExtraBundleWidth();
+                      fanSpread(bundle_walks_.front(), beam->walk, std::max(max_reach, beam->walk.reach)) <=
+                          maxExtraBundleWidth();
     if (!fits) {  // judge the bundle so far, start the next with this beam
       judgeBundle(origin, labels);
       max_reach = 0.0;
@@ -298,8 +298,9 @@ void FastPenetrationFilter::judgeBundle(const Eigen::Vector2d& origin, std::span
   if (bundle_.empty()) return;
   // Exact, whatever order the beams came in; only a bundle fanning out past
   // 120° has none, and then each beam walks alone.
-  const std::optional<BundleBand> band = bundleBand(bundle_walks_, walkHalfWidth());
-  if (bundle_.size() == 1 || !band) {
+  const std::optional<BundleBand> band =
+      bundle_.size() > 1 ? bundleBand(bundle_walks_, walkHalfWidth()) : std::nullopt;
+  if (!band) {
     for (const Beam& beam : bundle_)
       if (walkAlone(origin, beam)) labels[beam.index] = static_cast<std::uint8_t>(PointCode::kMisdetected);
   } else {
@@ -310,7 +311,7 @@ void FastPenetrationFilter::judgeBundle(const Eigen::Vector2d& origin, std::span
                           return false;
                         });
     for (const Beam& beam : bundle_)
-      if (!bundle_cells_.empty() && isMisdetected(origin, beam, bundle_cells_))
+      if (isMisdetected(origin, beam, bundle_cells_))
         labels[beam.index] = static_cast<std::uint8_t>(PointCode::kMisdetected);
   }
   bundle_.clear();

@@ -178,7 +178,7 @@ class FastPenetrationFilter final : public PenetrationFilter {
 
   ObstacleWindow window_;
   std::vector<Beam> bundle_;
-  std::vector<BundledBeam> bundle_walks_;
+  std::vector<BundledBeam> bundle_walks_;  // bundle_[k].walk, contiguous for bundleBand; filled and emptied with it
   std::vector<Eigen::Vector2d> bundle_cells_;  // obstacle positions in the bundle's band
 };
 
