@@ -57,13 +57,9 @@ void PenetrationFilter::resetOnPoseJump(const Eigen::Vector2d& origin, Stamp sta
 void PenetrationFilter::expireFrames(Stamp stamp) {
   while (!cache_.empty() && (stamp.secondsSince(cache_.front().stamp) > params_.frame_lifetime ||
                              cache_.size() >= params_.max_cache_frames)) {
-    const bool in_evidence = cache_.front().in_evidence;
-    for (const auto& p : cache_.front().points) {
-      grid_.remove(p);
-      if (in_evidence) evidence_.remove(p);
-    }
-    if (in_evidence)
-      for (const auto& p : cache_.front().others) evidence_.remove(p);
+    const CachedFrame& oldest = cache_.front();
+    for (const CellRun& run : oldest.votes) grid_.remove(run);
+    if (oldest.in_evidence) removeEvidence(oldest);
     cache_.pop_front();
   }
 }
@@ -85,14 +81,11 @@ void PenetrationFilter::cacheFrame(const Scan& scan, const Eigen::Vector2d& orig
     const bool at_edge = !edge.empty() && edge[i];
     const bool votes = !at_edge && (code == PointCode::kValid ||
                                     (code == PointCode::kMisdetected && params_.cache_misdetected_points));
-    if (votes) {
-      frame.points.push_back(points_[i]);
-      grid_.add(points_[i]);
-    } else if (params_.rescue_persistent_points) {
-      frame.others.push_back(points_[i]);
-    }
-    if (evidence_now) evidence_.add(points_[i]);
+    if (votes) grid_.appendToRuns(frame.votes, points_[i]);
+    else if (params_.rescue_persistent_points) grid_.appendToRuns(frame.others, points_[i]);
   }
+  for (const CellRun& run : frame.votes) grid_.add(run);
+  if (evidence_now) addEvidence(frame);
   cache_.push_back(std::move(frame));
 }
 
@@ -103,10 +96,19 @@ void PenetrationFilter::admitEvidence(const Eigen::Vector2d& origin) {
   const bool any_far = std::any_of(cache_.begin(), cache_.end(), far);
   for (auto& frame : cache_) {
     if (frame.in_evidence || (any_far && !far(frame))) continue;
-    for (const auto& p : frame.points) evidence_.add(p);
-    for (const auto& p : frame.others) evidence_.add(p);
+    addEvidence(frame);
     frame.in_evidence = true;
   }
+}
+
+void PenetrationFilter::addEvidence(const CachedFrame& frame) {
+  for (const CellRun& run : frame.votes) evidence_.add(run);
+  for (const CellRun& run : frame.others) evidence_.add(run);
+}
+
+void PenetrationFilter::removeEvidence(const CachedFrame& frame) {
+  for (const CellRun& run : frame.votes) evidence_.remove(run);
+  for (const CellRun& run : frame.others) evidence_.remove(run);
 }
 
 void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,

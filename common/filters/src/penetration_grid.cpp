@@ -40,15 +40,25 @@ PenetrationGrid::Tile& PenetrationGrid::tileForChange(std::uint64_t key, [[maybe
   return *change_tile_;
 }
 
-void PenetrationGrid::change(const Eigen::Vector2d& p, int delta) {
+void PenetrationGrid::appendToRuns(std::vector<CellRun>& runs, const Eigen::Vector2d& p) const {
   const CellIndex c = cellOf(p);
-  const std::uint64_t key = tileKey(c);
-  Tile& tile = tileForChange(key, delta);
-  const std::size_t index = slot(c);
+  if (!runs.empty() && runs.back().cell == c) {
+    ++runs.back().count;
+    runs.back().sum += p;
+  } else {
+    runs.push_back({c, 1, p});
+  }
+}
+
+void PenetrationGrid::change(const CellRun& run, int sign) {
+  const std::uint64_t key = tileKey(run.cell);
+  Tile& tile = tileForChange(key, sign);
+  const std::size_t index = slot(run.cell);
+  const std::int64_t delta = sign * static_cast<std::int64_t>(run.count);
   std::uint32_t& cell = tile.counts[index];
   cell = static_cast<std::uint32_t>(static_cast<std::int64_t>(cell) + delta);
   // An emptied cell starts from an exact zero, so rounding never accumulates.
-  tile.sums[index] = cell == 0 ? Eigen::Vector2d::Zero() : Eigen::Vector2d(tile.sums[index] + delta * p);
+  tile.sums[index] = cell == 0 ? Eigen::Vector2d::Zero() : Eigen::Vector2d(tile.sums[index] + sign * run.sum);
   const std::uint64_t bit = std::uint64_t{1} << (index % 64);
   if (static_cast<std::int64_t>(cell) > obstacle_threshold_) tile.obstacles[index / 64] |= bit;
   else tile.obstacles[index / 64] &= ~bit;

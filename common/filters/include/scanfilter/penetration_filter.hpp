@@ -90,8 +90,9 @@ class PenetrationFilter {
   struct CachedFrame {
     Stamp stamp;
     Eigen::Vector2d origin;               // the sensor's position (odometry)
-    std::vector<Eigen::Vector2d> points;  // vote in grid_
-    std::vector<Eigen::Vector2d> others;  // the other returns, in evidence_ only
+    // Runs of grid_'s cells (evidence_ has the same cells), in scan order.
+    std::vector<CellRun> votes;   // in grid_
+    std::vector<CellRun> others;  // the other returns, in evidence_ only
     bool in_evidence = false;             // its returns are in evidence_ (rescue_min_baseline)
   };
   // Where a frame lies: points_ under the pose and the running correction;
@@ -111,6 +112,9 @@ class PenetrationFilter {
   // With rescue_min_baseline: the cached frames taken at least that far from
   // `origin` join the evidence; all of them while none is.
   void admitEvidence(const Eigen::Vector2d& origin);
+  // All of a frame's returns into evidence_, or out of it.
+  void addEvidence(const CachedFrame& frame);
+  void removeEvidence(const CachedFrame& frame);
   bool evidenceWaitsForBaseline() const {
     return params_.rescue_persistent_points && params_.rescue_min_baseline > 0.0;
   }
