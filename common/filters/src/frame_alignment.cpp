@@ -49,21 +49,16 @@ void FrameAligner::snapshotObstacles(const PenetrationGrid& grid, std::span<cons
   });
 }
 
-const Eigen::Vector2d* FrameAligner::nearestObstacle(const Eigen::Vector2d& p, double* unchanged_within) const {
+FrameAligner::BlockSearch FrameAligner::searchBlock(const Eigen::Vector2d& p, int reach) const {
   const double max_distance = params_.max_match_distance;
-  const auto reach = static_cast<int>(std::ceil(max_distance / cell_size_));
   const auto cell_x = static_cast<int>(std::floor(p.x() / cell_size_));
   const auto cell_y = static_cast<int>(std::floor(p.y() / cell_size_));
   const auto cx = cell_x - lo_.x;
   const auto cy = cell_y - lo_.y;
-  const Eigen::Vector2d* best = nullptr;
-  double best_sq = max_distance * max_distance;
-  // The nearest centroid but the answer (or the nearest of all when there is
-  // none), squared; a centroid outside the cells searched is at least as far
-  // as their edge.
-  double runner_up_sq = std::numeric_limits<double>::infinity();
-  const double edge = std::min({p.x() - (cell_x - reach) * cell_size_, (cell_x + reach + 1) * cell_size_ - p.x(),
-                                p.y() - (cell_y - reach) * cell_size_, (cell_y + reach + 1) * cell_size_ - p.y()});
+  BlockSearch out;
+  out.best_sq = max_distance * max_distance;
+  out.edge = std::min({p.x() - (cell_x - reach) * cell_size_, (cell_x + reach + 1) * cell_size_ - p.x(),
+                       p.y() - (cell_y - reach) * cell_size_, (cell_y + reach + 1) * cell_size_ - p.y()});
   const int x_lo = std::max(0, cx - reach), x_hi = std::min(width_ - 1, cx + reach);
   for (int y = std::max(0, cy - reach); y <= std::min(height_ - 1, cy + reach) && x_lo <= x_hi; ++y) {
     // The obstacle cells of this row in x order, as the cell-by-cell scan
@@ -73,25 +68,41 @@ const Eigen::Vector2d* FrameAligner::nearestObstacle(const Eigen::Vector2d& p, d
         const int x = x0 + std::countr_zero(bits);
         const Eigen::Vector2d& q = centroids_[static_cast<std::size_t>(cells_[static_cast<std::size_t>(y * width_ + x)])];
         const double d = (q - p).squaredNorm();
-        if (d <= best_sq) {
-          if (best != nullptr) runner_up_sq = std::min(runner_up_sq, best_sq);
-          best_sq = d;
-          best = &q;
+        if (d <= out.best_sq) {
+          if (out.best != nullptr) out.runner_up_sq = std::min(out.runner_up_sq, out.best_sq);
+          out.best_sq = d;
+          out.best = &q;
         } else {
-          runner_up_sq = std::min(runner_up_sq, d);
+          out.runner_up_sq = std::min(out.runner_up_sq, d);
         }
       }
     }
   }
-  const double runner_up = std::min(std::sqrt(runner_up_sq), edge);
+  return out;
+}
+
+const Eigen::Vector2d* FrameAligner::nearestObstacle(const Eigen::Vector2d& p, double* unchanged_within) const {
+  const double max_distance = params_.max_match_distance;
+  // Most points lie on a surface whose centroids are within a cell: the 3 x 3
+  // cells around p settle the answer when it is nearer than their edge (every
+  // centroid outside is at least that far), and only otherwise is the whole
+  // reach searched. The answer is the same either way (a tie across the edge
+  // cannot happen: the edge must be strictly farther).
+  const auto reach = static_cast<int>(std::ceil(max_distance / cell_size_));
+  BlockSearch found = searchBlock(p, std::min(1, reach));
+  if (found.best == nullptr || !(std::sqrt(found.best_sq) < found.edge)) found = searchBlock(p, reach);
+  const double best = std::sqrt(found.best_sq);
+  // The nearest centroid but the answer (or the nearest of all when there is
+  // none); a centroid outside the cells searched is at least as far as their edge.
+  const double runner_up = std::min(std::sqrt(found.runner_up_sq), found.edge);
   // The answer holds while no other centroid can come as near as it (both
   // distances change by at most the move) and it stays within reach; "none"
   // holds while every centroid stays out of reach. Strictly: a tie is never
   // assumed away.
-  const double sure = best != nullptr ? std::min((runner_up - std::sqrt(best_sq)) / 2.0, max_distance - std::sqrt(best_sq))
-                                      : runner_up - max_distance;
+  const double sure = found.best != nullptr ? std::min((runner_up - best) / 2.0, max_distance - best)
+                                            : runner_up - max_distance;
   *unchanged_within = sure - kDistanceRoundingSlack;
-  return best;
+  return found.best;
 }
 
 void FrameAligner::findNormals(std::span<const Eigen::Vector2d> points, const std::vector<bool>& usable) {

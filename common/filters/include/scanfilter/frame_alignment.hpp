@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -83,6 +84,17 @@ class FrameAligner {
   // last in row order), or none; `*unchanged_within` gets how far p may move
   // with the answer sure to stay the same (0 when nothing is sure).
   const Eigen::Vector2d* nearestObstacle(const Eigen::Vector2d& p, double* unchanged_within) const;
+  // The cells within `reach` cells of p's: the nearest centroid within
+  // max_match_distance (ties: the last in row order), the squared distance of
+  // the nearest other one (infinity: none), and how far p is from the edge of
+  // the cells searched.
+  struct BlockSearch {
+    const Eigen::Vector2d* best = nullptr;
+    double best_sq = 0.0;
+    double runner_up_sq = std::numeric_limits<double>::infinity();
+    double edge = 0.0;
+  };
+  BlockSearch searchBlock(const Eigen::Vector2d& p, int reach) const;
   void findNormals(std::span<const Eigen::Vector2d> points, const std::vector<bool>& usable);
   // Keeps max_fit_points of the points with a direction, spread evenly.
   void thinToMaxFitPoints();
