@@ -355,6 +355,38 @@ TEST(PenetrationGrid, CountsAddAndRemove) {
   EXPECT_EQ(grid.tileCount(), 0u) << "an empty tile is freed";
 }
 
+TEST(PenetrationGrid, RunsCountAsTheirPointsAndLeaveNothingBehind) {
+  // Points along a line 2 mm apart: runs of consecutive points per 5 cm cell,
+  // a new run whenever the line enters another cell (or comes back to one).
+  PenetrationGrid by_points(0.05, 3), by_runs(0.05, 3);
+  std::vector<CellRun> runs;
+  std::vector<Eigen::Vector2d> points;
+  for (int i = 0; i < 200; ++i) points.emplace_back(-0.2 + 0.002 * i, 0.013 + 0.0007 * i);
+  points.push_back(points.front());  // back to the first cell: a run of its own
+  for (const auto& p : points) {
+    by_points.add(p);
+    by_runs.appendToRuns(runs, p);
+  }
+  EXPECT_LT(runs.size(), points.size() / 10) << "neighbouring points share runs";
+  std::uint32_t counted = 0;
+  for (const auto& run : runs) counted += run.count;
+  EXPECT_EQ(counted, points.size());
+  for (const auto& run : runs) by_runs.add(run);
+  for (const auto& p : points) {
+    const CellIndex c = by_points.cellOf(p);
+    EXPECT_EQ(by_runs.count(c), by_points.count(c));
+    EXPECT_TRUE(by_runs.centroid(c).isApprox(by_points.centroid(c), 1e-12));
+  }
+  std::vector<CellIndex> obstacles_by_points, obstacles_by_runs;
+  const CellIndex lo{-10, -10}, hi{10, 10};
+  by_points.forEachObstacleIn(lo, hi, [&](CellIndex c) { obstacles_by_points.push_back(c); });
+  by_runs.forEachObstacleIn(lo, hi, [&](CellIndex c) { obstacles_by_runs.push_back(c); });
+  EXPECT_FALSE(obstacles_by_runs.empty());
+  EXPECT_EQ(obstacles_by_runs, obstacles_by_points);
+  for (const auto& run : runs) by_runs.remove(run);
+  EXPECT_EQ(by_runs.tileCount(), 0u) << "removing the runs empties the grid";
+}
+
 TEST(PenetrationGrid, TheTileJustBelowBothAxesIsFoundAfterAnotherWasCreated) {
   // Cells -32..-1 in x and y form the tile whose key is all ones; a lookup
   // cache that used that key to mean "nothing cached" answered for it with

@@ -43,7 +43,7 @@ struct FrameAlignmentParams {
   // min_matches, or no fit could be good). Three unknowns need few
   // points; beyond a few hundred they add cost (a 3,600-beam scan has ten
   // times those of a 360-beam one) but not accuracy.
-  int max_fit_points = 720;
+  int max_fit_points = 480;
 };
 
 

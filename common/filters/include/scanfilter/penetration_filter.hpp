@@ -89,11 +89,11 @@ class PenetrationFilter {
  private:
   struct CachedFrame {
     Stamp stamp;
-    Eigen::Vector2d origin;               // the sensor's position (odometry)
+    Eigen::Vector2d origin;  // the sensor's position (odometry)
     // Runs of grid_'s cells (evidence_ has the same cells), in scan order.
     std::vector<CellRun> votes;   // in grid_
     std::vector<CellRun> others;  // the other returns, in evidence_ only
-    bool in_evidence = false;             // its returns are in evidence_ (rescue_min_baseline)
+    bool in_evidence = false;     // its returns are in evidence_ (rescue_min_baseline)
   };
   // Where a frame lies: points_ under the pose and the running correction;
   // returns the sensor origin there.

@@ -23,8 +23,8 @@ struct CellIndex {
 
 // Consecutive points of one cell, as a frame adds them to a grid: a
 // 3,600-beam scan puts ten or more neighbouring returns in one 5 cm cell, and
-// changing the cell once per run instead of once per point saves most of the
-// grid's cache misses (its cells are cold when a frame expires).
+// the grid then changes that cell once per run instead of once per point
+// when the frame arrives and when it expires (docs/performance.md).
 struct CellRun {
   CellIndex cell;
   std::uint32_t count = 0;
