@@ -368,6 +368,8 @@ TEST(PenetrationGrid, RunsCountAsTheirPointsAndLeaveNothingBehind) {
     by_runs.appendToRuns(runs, p);
   }
   EXPECT_LT(runs.size(), points.size() / 10) << "neighbouring points share runs";
+  EXPECT_EQ(runs.back().count, 1u) << "a point back in an earlier cell starts a run";
+  EXPECT_EQ(runs.back().cell, runs.front().cell);
   std::uint32_t counted = 0;
   for (const auto& run : runs) counted += run.count;
   EXPECT_EQ(counted, points.size());
@@ -383,8 +385,24 @@ TEST(PenetrationGrid, RunsCountAsTheirPointsAndLeaveNothingBehind) {
   by_runs.forEachObstacleIn(lo, hi, [&](CellIndex c) { obstacles_by_runs.push_back(c); });
   EXPECT_FALSE(obstacles_by_runs.empty());
   EXPECT_EQ(obstacles_by_runs, obstacles_by_points);
-  for (const auto& run : runs) by_runs.remove(run);
-  EXPECT_EQ(by_runs.tileCount(), 0u) << "removing the runs empties the grid";
+  // Half the runs out (and their points): what stays counts as before.
+  std::size_t first_point_kept = 0;
+  for (std::size_t r = 0; r < runs.size() / 2; ++r) {
+    by_runs.remove(runs[r]);
+    for (std::uint32_t k = 0; k < runs[r].count; ++k) by_points.remove(points[first_point_kept++]);
+  }
+  for (std::size_t i = first_point_kept; i < points.size(); ++i) {
+    const CellIndex c = by_points.cellOf(points[i]);
+    EXPECT_EQ(by_runs.count(c), by_points.count(c));
+    EXPECT_TRUE(by_runs.centroid(c).isApprox(by_points.centroid(c), 1e-12));
+  }
+  // Checked against the points themselves, not only the other grid: the
+  // first cell now holds the returning point alone.
+  EXPECT_EQ(by_runs.count(runs.front().cell), 1);
+  EXPECT_TRUE(by_runs.centroid(runs.front().cell).isApprox(points.back(), 1e-12));
+  // The rest out point by point: a grid filled by runs empties by its points.
+  for (std::size_t i = first_point_kept; i < points.size(); ++i) by_runs.remove(points[i]);
+  EXPECT_EQ(by_runs.tileCount(), 0u) << "removing every point empties the grid";
 }
 
 TEST(PenetrationGrid, TheTileJustBelowBothAxesIsFoundAfterAnotherWasCreated) {

@@ -88,9 +88,12 @@ const Eigen::Vector2d* FrameAligner::nearestObstacle(const Eigen::Vector2d& p, d
   // centroid outside is at least that far), and only otherwise is the whole
   // reach searched. The answer is the same either way (a tie across the edge
   // cannot happen: the edge must be strictly farther).
+  // The edge needs the same slack as the answer below: a centroid may lie a
+  // rounding error outside its cell (a cell's sum drifts as points come and go).
   const auto reach = static_cast<int>(std::ceil(max_distance / cell_size_));
   BlockSearch found = searchBlock(p, std::min(1, reach));
-  if (found.best == nullptr || !(std::sqrt(found.best_sq) < found.edge)) found = searchBlock(p, reach);
+  if (reach > 1 && (found.best == nullptr || !(std::sqrt(found.best_sq) + kDistanceRoundingSlack < found.edge)))
+    found = searchBlock(p, reach);
   const double best = std::sqrt(found.best_sq);
   // The nearest centroid but the answer (or the nearest of all when there is
   // none); a centroid outside the cells searched is at least as far as their edge.

@@ -29,7 +29,7 @@ PenetrationFilter::PenetrationFilter(const PenetrationFilterParams& params)
       rule_(params),
       evidence_along_beam_(rule_, params.surface_gap),
       grid_(params.cell_size, params.obstacle_threshold),
-      evidence_(params.cell_size),
+      evidence_(params.cell_size),  // the same cells as grid_: a frame's runs go into both
       aligner_(params.alignment) {}
 
 void PenetrationFilter::reset() {
@@ -67,7 +67,7 @@ void PenetrationFilter::expireFrames(Stamp stamp) {
 void PenetrationFilter::cacheFrame(const Scan& scan, const Eigen::Vector2d& origin,
                                    std::span<const std::uint8_t> labels) {
   // Without a baseline the frame's returns are evidence at once, added here
-  // in scan order; with one, admitEvidence adds them later.
+  // (its votes' runs, then the others'); with one, admitEvidence adds them later.
   const bool evidence_now = params_.rescue_persistent_points && !evidenceWaitsForBaseline();
   CachedFrame frame{scan.stamp, origin, {}, {}, evidence_now};
   // Only with the switch on: every frame goes through here.

@@ -25,12 +25,12 @@ Eigen::Vector2d PenetrationGrid::centroid(CellIndex c) const {
   return tile->sums[index] / static_cast<double>(tile->counts[index]);
 }
 
-PenetrationGrid::Tile& PenetrationGrid::tileForChange(std::uint64_t key, [[maybe_unused]] int delta) {
+PenetrationGrid::Tile& PenetrationGrid::tileForChange(std::uint64_t key, [[maybe_unused]] int sign) {
   // A frame's points come in scan order: most fall in the tile of the one before.
   if (change_tile_ != nullptr && key == change_key_) return *change_tile_;
   auto it = tiles_.find(key);
   if (it == tiles_.end()) {
-    assert(delta > 0 && "removing a point that was never added");
+    assert(sign > 0 && "removing a run that was never added");
     it = tiles_.emplace(key, std::make_unique<Tile>()).first;
     it->second->sums.fill(Eigen::Vector2d::Zero());
     last_valid_ = false;  // a lookup may have cached this key as absent

@@ -86,8 +86,10 @@ class FrameAligner {
   const Eigen::Vector2d* nearestObstacle(const Eigen::Vector2d& p, double* unchanged_within) const;
   // The cells within `reach` cells of p's: the nearest centroid within
   // max_match_distance (ties: the last in row order), the squared distance of
-  // the nearest other one (infinity: none), and how far p is from the edge of
-  // the cells searched.
+  // the nearest other one (with no answer: the nearest of all; infinity:
+  // none), and how far p is from the edge of the block searched. The edge is
+  // that of the whole block even where the window cuts it off: the snapshot
+  // holds no obstacle outside the window.
   struct BlockSearch {
     const Eigen::Vector2d* best = nullptr;
     double best_sq = 0.0;

@@ -21,8 +21,9 @@ struct CellIndex {
   bool operator==(const CellIndex&) const = default;
 };
 
-// Consecutive points of one cell, as a frame adds them to a grid: a
-// 3,600-beam scan puts ten or more neighbouring returns in one 5 cm cell, and
+// Consecutive points of one cell, as a frame adds them to a grid: at 0.1° a
+// wall within ~3 m of the sensor puts ten or more neighbouring returns in one
+// 5 cm cell, and
 // the grid then changes that cell once per run instead of once per point
 // when the frame arrives and when it expires (docs/performance.md).
 struct CellRun {
@@ -55,7 +56,8 @@ class PenetrationGrid {
 
   void add(const Eigen::Vector2d& p) { change({cellOf(p), 1, p}, +1); }
   void remove(const Eigen::Vector2d& p) { change({cellOf(p), 1, p}, -1); }
-  // A run counts as its points would, its sum added at once (rounded once).
+  // A run counts as its points would; its sum goes into the cell's at once
+  // (one rounding there per run, not per point).
   void add(const CellRun& run) { change(run, +1); }
   void remove(const CellRun& run) { change(run, -1); }
   // Appends p to `runs`, extending the last run when p falls in its cell.
@@ -117,8 +119,8 @@ class PenetrationGrid {
   const Tile* findTile(std::uint64_t key) const;
   // sign +1 adds the run, -1 removes it.
   void change(const CellRun& run, int sign);
-  // The tile holding `key`, created when a point is added to a new one.
-  Tile& tileForChange(std::uint64_t key, int delta);
+  // The tile holding `key`, created when a run is added to a new one.
+  Tile& tileForChange(std::uint64_t key, int sign);
 
   double cell_size_;
   int obstacle_threshold_;
