@@ -86,10 +86,10 @@ const Eigen::Vector2d* FrameAligner::nearestObstacle(const Eigen::Vector2d& p, d
   // Most points lie on a surface whose centroids are within a cell: the 3 x 3
   // cells around p settle the answer when it is nearer than their edge (every
   // centroid outside is at least that far), and only otherwise is the whole
-  // reach searched. The answer is the same either way (a tie across the edge
-  // cannot happen: the edge must be strictly farther).
-  // The edge needs the same slack as the answer below: a centroid may lie a
-  // rounding error outside its cell (a cell's sum drifts as points come and go).
+  // reach searched. The answer is the same either way: the edge must be
+  // farther by the rounding slack used below (a centroid may lie a rounding
+  // error outside its cell, as a cell's sum drifts while points come and go),
+  // so no centroid outside can tie with the answer or beat it.
   const auto reach = static_cast<int>(std::ceil(max_distance / cell_size_));
   BlockSearch found = searchBlock(p, std::min(1, reach));
   if (reach > 1 && (found.best == nullptr || !(std::sqrt(found.best_sq) + kDistanceRoundingSlack < found.edge)))
