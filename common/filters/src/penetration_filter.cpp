@@ -58,8 +58,8 @@ void PenetrationFilter::expireFrames(Stamp stamp) {
   while (!cache_.empty() && (stamp.secondsSince(cache_.front().stamp) > params_.frame_lifetime ||
                              cache_.size() >= params_.max_cache_frames)) {
     const CachedFrame& oldest = cache_.front();
-    for (const CellRun& run : oldest.votes) grid_.remove(run);
-    if (oldest.in_evidence) removeEvidence(oldest);
+    grid_.remove(oldest.votes);
+    if (oldest.in_evidence) removeRescueEvidence(oldest);
     cache_.pop_front();
   }
 }
@@ -84,8 +84,8 @@ void PenetrationFilter::cacheFrame(const Scan& scan, const Eigen::Vector2d& orig
     if (votes) grid_.appendToRuns(frame.votes, points_[i]);
     else if (params_.rescue_persistent_points) grid_.appendToRuns(frame.others, points_[i]);
   }
-  for (const CellRun& run : frame.votes) grid_.add(run);
-  if (evidence_now) addEvidence(frame);
+  grid_.add(frame.votes);
+  if (evidence_now) addRescueEvidence(frame);
   cache_.push_back(std::move(frame));
 }
 
@@ -96,19 +96,19 @@ void PenetrationFilter::admitEvidence(const Eigen::Vector2d& origin) {
   const bool any_far = std::any_of(cache_.begin(), cache_.end(), far);
   for (auto& frame : cache_) {
     if (frame.in_evidence || (any_far && !far(frame))) continue;
-    addEvidence(frame);
+    addRescueEvidence(frame);
     frame.in_evidence = true;
   }
 }
 
-void PenetrationFilter::addEvidence(const CachedFrame& frame) {
-  for (const CellRun& run : frame.votes) evidence_.add(run);
-  for (const CellRun& run : frame.others) evidence_.add(run);
+void PenetrationFilter::addRescueEvidence(const CachedFrame& frame) {
+  evidence_.add(frame.votes);
+  evidence_.add(frame.others);
 }
 
-void PenetrationFilter::removeEvidence(const CachedFrame& frame) {
-  for (const CellRun& run : frame.votes) evidence_.remove(run);
-  for (const CellRun& run : frame.others) evidence_.remove(run);
+void PenetrationFilter::removeRescueEvidence(const CachedFrame& frame) {
+  evidence_.remove(frame.votes);
+  evidence_.remove(frame.others);
 }
 
 void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
@@ -324,9 +324,8 @@ bool FastPenetrationFilter::walkAlone(const Eigen::Vector2d& origin, const Beam&
   // Stops at the first conclusive cell.
   evidence_along_beam_.reset();
   const Eigen::Vector2d end = origin + beam.walk.unit * beam.walk.reach;
-  return window_.anyAlongRay(origin, end, walkHalfWidth(), [&](CellIndex, const Eigen::Vector2d& q) {
-    return evidence_along_beam_.add(rule_.evidence(origin, points_[beam.index], q, beam.own_sq), q);
-  });
+  return window_.anyAlongRay(origin, end, walkHalfWidth(),
+                             [&](CellIndex, const Eigen::Vector2d& q) { return addBeamEvidence(origin, beam, q); });
 }
 
 bool FastPenetrationFilter::isMisdetected(const Eigen::Vector2d& origin, const Beam& beam,
@@ -335,8 +334,12 @@ bool FastPenetrationFilter::isMisdetected(const Eigen::Vector2d& origin, const B
   // bundle's cells in walk order gives the beam's own walk's answer.
   evidence_along_beam_.reset();
   for (const auto& q : cells)
-    if (evidence_along_beam_.add(rule_.evidence(origin, points_[beam.index], q, beam.own_sq), q)) return true;
+    if (addBeamEvidence(origin, beam, q)) return true;
   return false;
+}
+
+bool FastPenetrationFilter::addBeamEvidence(const Eigen::Vector2d& origin, const Beam& beam, const Eigen::Vector2d& q) {
+  return evidence_along_beam_.add(rule_.evidence(origin, points_[beam.index], q, beam.own_sq), q);
 }
 
 std::unique_ptr<PenetrationFilter> makePenetrationFilter(const PenetrationFilterParams& params,

@@ -112,9 +112,9 @@ class PenetrationFilter {
   // With rescue_min_baseline: the cached frames taken at least that far from
   // `origin` join the evidence; all of them while none is.
   void admitEvidence(const Eigen::Vector2d& origin);
-  // All of a frame's returns into evidence_, or out of it.
-  void addEvidence(const CachedFrame& frame);
-  void removeEvidence(const CachedFrame& frame);
+  // All of a frame's returns into evidence_ (the rescue's), or out of it.
+  void addRescueEvidence(const CachedFrame& frame);
+  void removeRescueEvidence(const CachedFrame& frame);
   bool evidenceWaitsForBaseline() const {
     return params_.rescue_persistent_points && params_.rescue_min_baseline > 0.0;
   }
@@ -171,6 +171,9 @@ class FastPenetrationFilter final : public PenetrationFilter {
   bool walkAlone(const Eigen::Vector2d& origin, const Beam& beam);
   // The beam judged against `cells`, a superset of the obstacle positions its own walk would visit.
   bool isMisdetected(const Eigen::Vector2d& origin, const Beam& beam, std::span<const Eigen::Vector2d> cells);
+  // Cell position q as evidence against the beam (the shared rule); true once
+  // the beam's evidence is conclusive.
+  bool addBeamEvidence(const Eigen::Vector2d& origin, const Beam& beam, const Eigen::Vector2d& q);
   // Half width of one beam's walk: off the beam by the straddle (or
   // corridor) and by how far an obstacle's position can sit from its cell centre.
   double walkHalfWidth() const { return rule_.outerHalfWidth() + positionSlack(); }

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <span>
 #include <unordered_map>
 #include <vector>
 
@@ -23,9 +24,8 @@ struct CellIndex {
 
 // Consecutive points of one cell, as a frame adds them to a grid: at 0.1° a
 // wall within ~3 m of the sensor puts ten or more neighbouring returns in one
-// 5 cm cell, and
-// the grid then changes that cell once per run instead of once per point
-// when the frame arrives and when it expires (docs/performance.md).
+// 5 cm cell, and the grid then changes that cell once per run instead of once
+// per point when the frame arrives and when it expires (docs/performance.md).
 struct CellRun {
   CellIndex cell;
   std::uint32_t count = 0;
@@ -60,6 +60,12 @@ class PenetrationGrid {
   // (one rounding there per run, not per point).
   void add(const CellRun& run) { change(run, +1); }
   void remove(const CellRun& run) { change(run, -1); }
+  void add(std::span<const CellRun> runs) {
+    for (const CellRun& run : runs) change(run, +1);
+  }
+  void remove(std::span<const CellRun> runs) {
+    for (const CellRun& run : runs) change(run, -1);
+  }
   // Appends p to `runs`, extending the last run when p falls in its cell.
   void appendToRuns(std::vector<CellRun>& runs, const Eigen::Vector2d& p) const;
   void clear() {
