@@ -18,7 +18,7 @@
 #include "scanfilter/dds/topic_names.hpp"
 #include "scanfilter/dds/typed_reader.hpp"
 #include "scanfilter/dds/typed_writer.hpp"
-#include "scanfilter/dds/upstream_liveliness.hpp"
+#include "scanfilter/dds/upstream_presence.hpp"
 #include "scanfilter/map_config.hpp"
 #include "scanfilter/map_files.hpp"
 #include "scanfilter_typesPubSubTypes.h"
@@ -133,7 +133,7 @@ class MapService {
   map_service::MapMetrics metrics_;
   map_service::MapProgress progress_;  // what the map holds (saved with it)
   const std::uint64_t loaded_scans_ = progress_.scans_integrated;
-  UpstreamLiveliness upstream_;
+  UpstreamPresence upstream_;
   std::mutex mutex_;
   Scan scan_;
   SensorInfo sensor_;

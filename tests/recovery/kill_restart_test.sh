@@ -141,12 +141,13 @@ for kill in "${KILLS[@]}"; do
   wait "${PID[$name]}" 2>/dev/null || true
   echo "killed $name at scan $(published) ($((SECONDS - t0)) s)"
   if [ "$name" = jump_filter ]; then
-    # Downstream sees its upstream go: DDS liveliness (1 s lease), gauge 0.
+    # Downstream sees its upstream go: discovery drops the dead writer when
+    # its participant's lease (3 s in the shipped profile) runs out; gauge 0.
     down() { [ "$(gauge 19473 'scanfilter_upstream_alive{service="penetration_filter",topic="rt/jump_filtered_scan"}')" = 0 ]; }
-    wait_for "penetration_filter's scanfilter_upstream_alive to drop to 0" 5 down
+    wait_for "penetration_filter's scanfilter_upstream_alive to drop to 0" 8 down
     UPSTREAM_DOWN_SEEN[$name]=1
   fi
-  sleep 0.5  # systemd's RestartSec is 100 ms by default; a little longer, so liveliness shows the gap
+  sleep 0.5  # systemd's RestartSec is 100 ms by default; a little longer
   start "$name"
   for other in "${!PORT[@]}"; do
     [ "$other" = "$name" ] || [ "$other" = scan_ingest ] || alive "$other" || fail "$other died after $name was killed"

@@ -46,7 +46,7 @@ ServiceMetrics::ServiceMetrics(const std::string& service, const std::string& ad
       hop_(BuildHistogram().Name("scanfilter_hop_latency_seconds").Help("From the previous stage publishing a scan to this service receiving it")
                .Register(*registry_).Add({{"service", service}}, latencyBuckets())),
       matched_(BuildGauge().Name("scanfilter_dds_matched").Help("Matched DDS endpoints per local reader/writer").Register(*registry_)),
-      upstream_alive_(BuildGauge().Name("scanfilter_upstream_alive").Help("1 while a writer of the stage topic read is alive (DDS liveliness), else 0").Register(*registry_)),
+      upstream_alive_(BuildGauge().Name("scanfilter_upstream_alive").Help("1 while a writer of the stage topic read is matched (DDS discovery: gone when it leaves or its participant lease runs out), else 0").Register(*registry_)),
       cpu_seconds_(BuildGauge().Name("scanfilter_process_cpu_seconds_total").Help("CPU time used by the process").Register(*registry_).Add({{"service", service}})),
       resident_bytes_(BuildGauge().Name("scanfilter_process_resident_memory_bytes").Help("Resident memory of the process").Register(*registry_).Add({{"service", service}})) {
   BuildGauge().Name("scanfilter_build_info").Help("Build information").Register(*registry_).Add({{"service", service}, {"version", version}}).Set(1);

@@ -11,7 +11,7 @@
 #include "scanfilter/dds/service_runtime.hpp"
 #include "scanfilter/dds/typed_reader.hpp"
 #include "scanfilter/dds/typed_writer.hpp"
-#include "scanfilter/dds/upstream_liveliness.hpp"
+#include "scanfilter/dds/upstream_presence.hpp"
 #include "scanfilter_typesPubSubTypes.h"
 
 namespace scanfilter::dds_io {
@@ -48,7 +48,7 @@ class FilterStage {
   SensorInfo sensor_;
   std::vector<std::uint8_t> labels_before_;
   std::atomic<std::uint64_t> processed_{0};
-  UpstreamLiveliness upstream_;
+  UpstreamPresence upstream_;
   using Writer = TypedWriter<scanfilter_msgs::msg::dds_::LabeledScan_PubSubType>;
   Writer writer_;
   TypedReader<scanfilter_msgs::msg::dds_::LabeledScan_PubSubType> reader_;  // last: callbacks see a ready writer

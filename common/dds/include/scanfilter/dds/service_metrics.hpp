@@ -32,7 +32,7 @@ class ServiceMetrics {
   void hopLatency(double seconds) { hop_.Observe(seconds); }
   void matched(const std::string& endpoint, const std::string& topic, int count);
   // scanfilter_upstream_alive{service,topic}: 1 while a writer of the stage
-  // topic this service reads is alive (DDS liveliness), 0 otherwise.
+  // topic this service reads is matched (DDS discovery), 0 otherwise.
   void upstreamAlive(const std::string& topic, bool alive);
   // Refreshes the process CPU time and resident memory gauges.
   void updateProcessStats();

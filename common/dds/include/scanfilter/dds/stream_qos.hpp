@@ -9,9 +9,7 @@ eprosima::fastrtps::Duration_t toDuration(double seconds);
 
 // QoS of the scan streams between the pipeline's stages: reliable and
 // keep-all with a bounded queue, so a fast producer is slowed down by the
-// slowest consumer (write() blocks) instead of losing scans; AUTOMATIC
-// liveliness with a 1 s lease, so a reader learns within a second that its
-// upstream is gone.
+// slowest consumer (write() blocks) instead of losing scans.
 struct StreamQos {
   int queue_depth = 64;           // samples buffered per writer and reader
   double max_blocking_s = 5.0;    // how long write() waits for room before failing

@@ -30,21 +30,21 @@ class TypedReader : private eprosima::fastdds::dds::DataReaderListener {
  public:
   using Sample = typename PubSubType::type;
   using Callback = std::function<void(Sample&)>;
-  // Called (on a Fast DDS thread) with the number of live writers whenever a
-  // writer's liveliness changes: one appeared, or its lease ran out.
-  using LivelinessCallback = std::function<void(int alive_writers)>;
+  // Called (on a Fast DDS thread) with the number of matched writers whenever
+  // it changes: one matched, or discovery dropped one (it left, or its
+  // participant's lease ran out: a crash, a frozen process, a lost link).
+  using WritersCallback = std::function<void(int matched_writers)>;
 
   TypedReader(DdsParticipant& participant, const std::string& topic_name,
               const eprosima::fastdds::dds::DataReaderQos& qos, Callback callback,
-              LivelinessCallback on_liveliness = {})
+              WritersCallback on_writers = {})
       : participant_(participant),
         callback_(std::move(callback)),
-        on_liveliness_(std::move(on_liveliness)),
+        on_writers_(std::move(on_writers)),
         heartbeat_("the reader of " + topic_name) {
     auto* topic = participant.topic(topic_name, eprosima::fastdds::dds::TypeSupport(new CheckedPubSubType<PubSubType>()));
-    auto mask = eprosima::fastdds::dds::StatusMask::subscription_matched();
-    if (on_liveliness_) mask << eprosima::fastdds::dds::StatusMask::liveliness_changed();
-    reader_ = participant.subscriber()->create_datareader(topic, qos, this, mask);
+    reader_ = participant.subscriber()->create_datareader(topic, qos, this,
+                                                          eprosima::fastdds::dds::StatusMask::subscription_matched());
     if (reader_ == nullptr) throw std::runtime_error("cannot create a reader on " + topic_name);
     worker_ = std::thread([this] { takeLoop(); });
   }
@@ -76,15 +76,12 @@ class TypedReader : private eprosima::fastdds::dds::DataReaderListener {
   void on_subscription_matched(eprosima::fastdds::dds::DataReader*,
                                const eprosima::fastdds::dds::SubscriptionMatchedStatus& status) override {
     matched_ = status.current_count;
-  }
-  void on_liveliness_changed(eprosima::fastdds::dds::DataReader*,
-                             const eprosima::fastdds::dds::LivelinessChangedStatus& status) override {
-    if (on_liveliness_) on_liveliness_(status.alive_count);
+    if (on_writers_) on_writers_(status.current_count);
   }
 
   DdsParticipant& participant_;
   Callback callback_;
-  LivelinessCallback on_liveliness_;
+  WritersCallback on_writers_;
   eprosima::fastdds::dds::DataReader* reader_ = nullptr;
   Sample sample_;  // reused: no allocation per scan once sizes settle
   std::atomic<int> matched_{0};
