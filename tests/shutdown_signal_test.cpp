@@ -3,7 +3,9 @@
 // process-wide and sticky; ctest runs each test in its own process.
 #include <chrono>
 #include <csignal>
+#include <fstream>
 #include <future>
+#include <string>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -28,10 +30,26 @@ std::future<std::pair<double, bool>> waitOnAnotherThread() {
 }
 }  // namespace
 
-TEST(ShutdownSignal, WaitsItsTimeoutWithoutARequest) {
+// The calling thread's voluntary context switches so far (Linux).
+long voluntarySwitches() {
+  std::ifstream status("/proc/thread-self/status");
+  for (std::string key; status >> key;) {
+    if (key == "voluntary_ctxt_switches:") {
+      long n = 0;
+      status >> n;
+      return n;
+    }
+  }
+  return -1;
+}
+
+TEST(ShutdownSignal, SleepsThroughItsTimeoutWithoutARequest) {
+  const long switches_before = voluntarySwitches();
   const auto start = Clock::now();
-  EXPECT_FALSE(ShutdownSignal::waitFor(std::chrono::milliseconds(200)));
-  EXPECT_GE(Clock::now() - start, std::chrono::milliseconds(200));
+  EXPECT_FALSE(ShutdownSignal::waitFor(std::chrono::seconds(1)));
+  EXPECT_GE(Clock::now() - start, std::chrono::seconds(1));
+  // One sleep, not a poll: polling every 20 ms would switch ~50 times.
+  EXPECT_LT(voluntarySwitches() - switches_before, 5);
   EXPECT_FALSE(ShutdownSignal::requested());
 }
 

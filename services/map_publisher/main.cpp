@@ -52,7 +52,7 @@ class MapService {
         map_writer_(runtime.participant(), runtime.topic("map"), latchedMapQos()),
         update_writer_(runtime.participant(), runtime.topic("map_updates"), rosDefaultWriterQos()),
         reader_(runtime.participant(), runtime.topic(kLabeledScanTopic), losslessReaderQos(runtime.settings().stream),
-                [this](LabeledScanMsg& msg) { integrate(msg); }, [this](int alive) { upstream_.onChanged(alive); }) {
+                [this](LabeledScanMsg& msg) { integrate(msg); }, [this](int writers) { upstream_.onChanged(writers); }) {
     runtime.reportMatched("reader", runtime.topic(kLabeledScanTopic), [this] { return reader_.matchedWriters(); });
     runtime.reportMatched("writer", runtime.topic("map"), [this] { return map_writer_.matchedReaders(); });
     runtime.reportMatched("writer", runtime.topic("map_updates"), [this] { return update_writer_.matchedReaders(); });

@@ -18,8 +18,8 @@
 # The order: a healthy stream (only the latency alert, by the budget above),
 # malformed samples (SamplesRejected), the map's folder removed
 # (MapNotSaved), the stream stopped (NoScans on all four), jump_filter killed
-# with SIGKILL (ServiceDown; with the liveliness gauge of the services also
-# UpstreamNotAlive), each within a bounded wait.
+# with SIGKILL (ServiceDown; with the upstream-presence gauge of the services
+# also UpstreamNotAlive), each within a bounded wait.
 set -euo pipefail
 BUILD="$1" SRC="$2"
 source "$(dirname "$0")/../lib/dds_test_workspace.sh"  # private network namespace, DOMAIN, WORK, PIDS, cleanup
@@ -238,7 +238,7 @@ echo "ServiceDown fired ${down_ms} ms after kill -9 of jump_filter (for: ${ALERT
 alerts=$(firing_alerts)
 down=$(grep '^ScanfilterServiceDown ' <<<"$alerts" || true)
 [ "$down" = "ScanfilterServiceDown jump_filter" ] || fail "ServiceDown fires for: $down"
-# The liveliness gauge (scanfilter_upstream_alive) where the services export it.
+# The upstream-presence gauge (scanfilter_upstream_alive) where the services export it.
 if [ -n "$(prom_query 'count(scanfilter_upstream_alive)')" ]; then
   wait_firing ScanfilterUpstreamNotAlive penetration_filter
   echo "UpstreamNotAlive fired for penetration_filter ${WAITED_MS} ms after ServiceDown"

@@ -19,7 +19,7 @@ FilterStage::FilterStage(ServiceRuntime& runtime, std::string stage, const std::
       upstream_(runtime.metrics(), runtime.topic(input)),
       writer_(runtime.participant(), runtime.topic(output), losslessWriterQos(runtime.settings().stream)),
       reader_(runtime.participant(), runtime.topic(input), losslessReaderQos(runtime.settings().stream),
-              [this](LabeledScanMsg& msg) { onSample(msg); }, [this](int alive) { upstream_.onChanged(alive); }) {
+              [this](LabeledScanMsg& msg) { onSample(msg); }, [this](int writers) { upstream_.onChanged(writers); }) {
   writer_.setFlowControl(flowControlWindow(runtime.settings().stream), runtime.settings().stream.max_blocking_s);
   // Lossless: a departed reader (a crashed stage) is waited for, not written past.
   writer_.holdForReaders(runtime.settings().stream.required_readers, [] { return ShutdownSignal::requested(); });

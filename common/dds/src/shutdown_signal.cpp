@@ -1,35 +1,39 @@
 #include "scanfilter/dds/shutdown_signal.hpp"
 
-#include <semaphore.h>
+#include <poll.h>
+#include <sys/eventfd.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <csignal>
-#include <ctime>
+#include <cstdint>
+#include <thread>
 
 namespace scanfilter::dds_io {
 
 namespace {
 std::atomic<bool> g_requested{false};
-// Posted once per request and passed on by every waiter it wakes, so a
-// request wakes all waiters at once and later waits return at once. A
-// semaphore because sem_post is async-signal-safe (a condition variable is
-// not); the waiters sleep in the kernel instead of polling, which woke every
-// service 50 times a second (docs/performance.md).
-sem_t g_wakeup;
-// Cannot fail: a process-private semaphore starting at 0.
-[[maybe_unused]] const int g_wakeup_init = sem_init(&g_wakeup, 0, 0);
+// Becomes readable at the first request and is never read, so a request
+// wakes every waiter at once and later waits return at once. An eventfd
+// because write() is async-signal-safe (a condition variable is not), and
+// the waiters sleep in ppoll() instead of polling a flag, which woke every
+// service 50 times a second (docs/performance.md). ppoll and not
+// sem_clockwait: ThreadSanitizer intercepts ppoll, and holds a signal back
+// from a thread blocked in a call it does not intercept.
+const int g_wakeup_fd = eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK);
 
-extern "C" void onSignal(int) {
-  g_requested.store(true);
-  sem_post(&g_wakeup);
+void wakeWaiters() {
+  const std::uint64_t one = 1;
+  [[maybe_unused]] const auto written = write(g_wakeup_fd, &one, sizeof one);
 }
 
-timespec deadlineAfter(std::chrono::milliseconds timeout) {
-  timespec now{};
-  clock_gettime(CLOCK_MONOTONIC, &now);
-  const auto ns = std::chrono::nanoseconds(timeout).count() + now.tv_nsec;
-  return {now.tv_sec + static_cast<time_t>(ns / 1'000'000'000), static_cast<long>(ns % 1'000'000'000)};
+extern "C" void onSignal(int) {
+  const int saved_errno = errno;  // the interrupted code may be about to read it
+  g_requested.store(true);
+  wakeWaiters();
+  errno = saved_errno;
 }
 }  // namespace
 
@@ -45,18 +49,22 @@ bool ShutdownSignal::requested() { return g_requested.load(); }
 
 void ShutdownSignal::request() {
   g_requested.store(true);
-  sem_post(&g_wakeup);
+  wakeWaiters();
 }
 
 bool ShutdownSignal::waitFor(std::chrono::milliseconds timeout) {
-  if (g_requested.load()) return true;
-  const timespec deadline = deadlineAfter(timeout);
+  const auto end = std::chrono::steady_clock::now() + timeout;
   while (!g_requested.load()) {
-    if (sem_clockwait(&g_wakeup, CLOCK_MONOTONIC, &deadline) == 0) {
-      sem_post(&g_wakeup);  // pass the wake-up on to the next waiter
-      break;
-    }
-    if (errno != EINTR) break;  // ETIMEDOUT
+    const auto left = std::max(end - std::chrono::steady_clock::now(), std::chrono::steady_clock::duration::zero());
+    if (left == std::chrono::steady_clock::duration::zero()) break;
+    const auto s = std::chrono::duration_cast<std::chrono::seconds>(left);
+    const timespec wait{static_cast<time_t>(s.count()),
+                        static_cast<long>(std::chrono::duration_cast<std::chrono::nanoseconds>(left - s).count())};
+    pollfd wakeup{g_wakeup_fd, POLLIN, 0};
+    // A signal (EINTR) or the eventfd ends the wait; the loop re-checks the flag.
+    // Without an eventfd (none could be made) the wait still ends at its time.
+    if (ppoll(&wakeup, g_wakeup_fd >= 0 ? 1 : 0, &wait, nullptr) < 0 && errno != EINTR)
+      std::this_thread::sleep_for(left);  // cannot happen with a valid fd; never spin
   }
   return g_requested.load();
 }
