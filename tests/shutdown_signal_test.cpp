@@ -28,7 +28,6 @@ std::future<std::pair<double, bool>> waitOnAnotherThread() {
     return std::pair{std::chrono::duration<double>(Clock::now() - start).count(), requested};
   });
 }
-}  // namespace
 
 // The calling thread's voluntary context switches so far (Linux).
 long voluntarySwitches() {
@@ -42,6 +41,7 @@ long voluntarySwitches() {
   }
   return -1;
 }
+}  // namespace
 
 TEST(ShutdownSignal, SleepsThroughItsTimeoutWithoutARequest) {
   const long switches_before = voluntarySwitches();

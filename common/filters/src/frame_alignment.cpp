@@ -38,12 +38,12 @@ void FrameAligner::snapshotObstacles(const PenetrationGrid& grid, std::span<cons
   const CellIndex top = grid.cellOf(box.max().array() + reach);
   width_ = top.x - lo_.x + 1;
   height_ = top.y - lo_.y + 1;
-  cells_.assign(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), kNoObstacle);
+  cells_.reset(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_));
   occupied_bits_.reset(width_, height_);
   centroids_.clear();
   grid.forEachObstacleIn(lo_, top, [&](CellIndex c) {
     const int x = c.x - lo_.x, y = c.y - lo_.y;
-    cells_[static_cast<std::size_t>(y * width_ + x)] = static_cast<std::int32_t>(centroids_.size());
+    cells_.set(static_cast<std::size_t>(y * width_ + x), static_cast<std::int32_t>(centroids_.size()));
     occupied_bits_.set(x, y);
     centroids_.push_back(grid.centroid(c));
   });

@@ -8,7 +8,7 @@ void ObstacleWindow::resize(CellIndex lo, CellIndex hi) {
   lo_ = lo;
   width_ = static_cast<std::uint32_t>(std::max(0, hi.x - lo.x + 1));
   height_ = static_cast<std::uint32_t>(std::max(0, hi.y - lo.y + 1));
-  cells_.assign(static_cast<std::size_t>(width_) * height_, kNoObstacle);
+  cells_.reset(static_cast<std::size_t>(width_) * height_);
   positions_.clear();
   block_lo_ = {lo.x >> kBlockBits, lo.y >> kBlockBits};
   block_width_ = static_cast<std::uint32_t>((hi.x >> kBlockBits) - block_lo_.x + 1);
@@ -19,8 +19,8 @@ void ObstacleWindow::resize(CellIndex lo, CellIndex hi) {
 }
 
 void ObstacleWindow::mark(CellIndex c, const Eigen::Vector2d& position) {
-  cells_[static_cast<std::size_t>(c.y - lo_.y) * width_ + static_cast<std::size_t>(c.x - lo_.x)] =
-      static_cast<std::int32_t>(positions_.size());
+  cells_.set(static_cast<std::size_t>(c.y - lo_.y) * width_ + static_cast<std::size_t>(c.x - lo_.x),
+             static_cast<std::int32_t>(positions_.size()));
   positions_.push_back(position);
   rows_.set(c.x - lo_.x, c.y - lo_.y);
   columns_.set(c.y - lo_.y, c.x - lo_.x);

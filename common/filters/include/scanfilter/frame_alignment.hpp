@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include "scanfilter/cell_bitmap.hpp"
+#include "scanfilter/cell_slots.hpp"
 #include "scanfilter/penetration_grid.hpp"
 
 namespace scanfilter {
@@ -110,10 +111,8 @@ class FrameAligner {
 
   FrameAlignmentParams params_;
   // Obstacle cells over the frame's reach: per cell an index into
-  // centroids_ (kNoObstacle: none). Four bytes a cell: the window is
-  // rebuilt every frame and mostly empty.
-  static constexpr std::int32_t kNoObstacle = -1;
-  std::vector<std::int32_t> cells_;
+  // centroids_ (CellSlots::kNone: none), rebuilt every frame, mostly empty.
+  CellSlots cells_;
   // The same cells as one bit each, a row of words per cell row: a point's
   // neighbourhood (7 x 7 cells at the defaults) is read as 7 short bit runs,
   // and only the set bits cost a look at cells_ (at 3,600 beams the scan of

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include "scanfilter/cell_bitmap.hpp"
+#include "scanfilter/cell_slots.hpp"
 #include "scanfilter/penetration_grid.hpp"
 
 namespace scanfilter {
@@ -34,7 +35,7 @@ class ObstacleWindow {
     grid.forEachObstacleIn(lo, hi, [&](CellIndex c) { mark(c, position(c)); });
   }
 
-  bool isObstacle(CellIndex c) const { return indexOf(c) != kNoObstacle; }
+  bool isObstacle(CellIndex c) const { return indexOf(c) != CellSlots::kNone; }
 
   // Calls pred(cell, position) for the obstacle cells whose centre can lie
   // within `half_width` of segment a-b (a superset: pred makes the exact
@@ -43,13 +44,12 @@ class ObstacleWindow {
   bool anyAlongRay(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double half_width, Pred&& pred) const;
 
  private:
-  static constexpr std::int32_t kNoObstacle = -1;
   void resize(CellIndex lo, CellIndex hi);
   void mark(CellIndex c, const Eigen::Vector2d& position);
   std::int32_t indexOf(CellIndex c) const {
     const auto x = static_cast<std::uint32_t>(c.x - lo_.x);
     const auto y = static_cast<std::uint32_t>(c.y - lo_.y);
-    if (x >= width_ || y >= height_) return kNoObstacle;  // also catches c < lo (wraps)
+    if (x >= width_ || y >= height_) return CellSlots::kNone;  // also catches c < lo (wraps)
     return cells_[static_cast<std::size_t>(y) * width_ + x];
   }
   bool blockHasObstacle(std::int32_t bx, std::int32_t by) const {
@@ -63,7 +63,7 @@ class ObstacleWindow {
   CellIndex lo_;
   std::uint32_t width_ = 0;
   std::uint32_t height_ = 0;
-  std::vector<std::int32_t> cells_;  // index into positions_, kNoObstacle for none
+  CellSlots cells_;  // index into positions_, kNone for none
   std::vector<Eigen::Vector2d> positions_;
   CellIndex block_lo_;
   std::uint32_t block_width_ = 0;

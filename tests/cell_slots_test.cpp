@@ -1,0 +1,62 @@
+// CellSlots and the obstacle window built on it: a reset clears what the
+// last frame set, so a rectangle rebuilt smaller, larger or elsewhere holds
+// exactly its own frame's cells.
+#include <cstddef>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "scanfilter/cell_slots.hpp"
+#include "scanfilter/obstacle_window.hpp"
+#include "scanfilter/penetration_grid.hpp"
+
+namespace scanfilter {
+namespace {
+
+void expectAllNone(const CellSlots& slots, std::size_t cells) {
+  for (std::size_t i = 0; i < cells; ++i) ASSERT_EQ(slots[i], CellSlots::kNone) << "offset " << i;
+}
+
+TEST(CellSlots, ResetClearsWhatWasSetWhateverTheNextSize) {
+  CellSlots slots;
+  slots.reset(100);
+  expectAllNone(slots, 100);
+  slots.set(3, 0);
+  slots.set(99, 1);
+  EXPECT_EQ(slots[3], 0);
+  EXPECT_EQ(slots[99], 1);
+  slots.reset(50);  // smaller: offset 99 lies beyond it, and must not come back later
+  expectAllNone(slots, 50);
+  slots.set(49, 7);
+  slots.reset(200);  // larger than ever before
+  expectAllNone(slots, 200);
+}
+
+// Obstacles of a grid as the window sees them over lo..hi, against the grid.
+void expectWindowMatchesGrid(const ObstacleWindow& window, const PenetrationGrid& grid, CellIndex lo,
+                             CellIndex hi) {
+  for (std::int32_t y = lo.y; y <= hi.y; ++y)
+    for (std::int32_t x = lo.x; x <= hi.x; ++x)
+      ASSERT_EQ(window.isObstacle({x, y}), grid.count({x, y}) > 0) << "cell " << x << ", " << y;
+}
+
+TEST(ObstacleWindow, ARebuiltWindowHoldsOnlyItsOwnFramesObstacles) {
+  PenetrationGrid grid(0.05, 0);  // every counted cell is an obstacle
+  for (int k = 0; k < 40; ++k) grid.add(Eigen::Vector2d(0.05 * k + 0.01, 0.5));  // a wall along y = 0.5
+  ObstacleWindow window;
+  const auto at = [&](CellIndex c) { return grid.cellCentre(c); };
+  window.build(grid, {-5, -5}, {60, 30}, at);
+  expectWindowMatchesGrid(window, grid, {-5, -5}, {60, 30});
+
+  // The wall moves (the next frame's cache), the window shrinks and shifts:
+  // none of the first frame's cells may linger.
+  PenetrationGrid moved(0.05, 0);
+  for (int k = 0; k < 10; ++k) moved.add(Eigen::Vector2d(0.21, 0.05 * k + 0.01));  // a wall along x = 0.21
+  window.build(moved, {0, 0}, {20, 20}, at);
+  expectWindowMatchesGrid(window, moved, {-3, -3}, {23, 23});
+  window.build(moved, {-10, -10}, {80, 40}, at);  // and larger than the first
+  expectWindowMatchesGrid(window, moved, {-10, -10}, {80, 40});
+}
+
+}  // namespace
+}  // namespace scanfilter
