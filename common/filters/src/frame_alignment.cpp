@@ -30,7 +30,7 @@ void FrameAligner::snapshotObstacles(const PenetrationGrid& grid, std::span<cons
   const Eigen::AlignedBox2d box = returnBounds(points);
   cell_size_ = grid.cellSize();
   if (box.isEmpty()) {
-    width_ = height_ = 0;
+    width_ = height_ = 0;  // align() returns before any lookup; the next snapshot's reset clears cells_
     return;
   }
   const double reach = params_.max_match_distance + cell_size_;
