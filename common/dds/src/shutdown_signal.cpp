@@ -4,7 +4,6 @@
 #include <sys/eventfd.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <csignal>
@@ -55,8 +54,8 @@ void ShutdownSignal::request() {
 bool ShutdownSignal::waitFor(std::chrono::milliseconds timeout) {
   const auto end = std::chrono::steady_clock::now() + timeout;
   while (!g_requested.load()) {
-    const auto left = std::max(end - std::chrono::steady_clock::now(), std::chrono::steady_clock::duration::zero());
-    if (left == std::chrono::steady_clock::duration::zero()) break;
+    const auto left = end - std::chrono::steady_clock::now();
+    if (left <= std::chrono::steady_clock::duration::zero()) break;
     const auto s = std::chrono::duration_cast<std::chrono::seconds>(left);
     const timespec wait{static_cast<time_t>(s.count()),
                         static_cast<long>(std::chrono::duration_cast<std::chrono::nanoseconds>(left - s).count())};
