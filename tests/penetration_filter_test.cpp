@@ -1,8 +1,9 @@
 #include <algorithm>
 #include <cstdio>
-#include <random>
-
 #include <limits>
+#include <random>
+#include <span>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -373,7 +374,7 @@ TEST(PenetrationGrid, RunsCountAsTheirPointsAndLeaveNothingBehind) {
   std::uint32_t counted = 0;
   for (const auto& run : runs) counted += run.count;
   EXPECT_EQ(counted, points.size());
-  for (const auto& run : runs) by_runs.add(run);
+  by_runs.add(runs);
   for (const auto& p : points) {
     const CellIndex c = by_points.cellOf(p);
     EXPECT_EQ(by_runs.count(c), by_points.count(c));
@@ -388,7 +389,7 @@ TEST(PenetrationGrid, RunsCountAsTheirPointsAndLeaveNothingBehind) {
   // Half the runs out (and their points): what stays counts as before.
   std::size_t first_point_kept = 0;
   for (std::size_t r = 0; r < runs.size() / 2; ++r) {
-    by_runs.remove(runs[r]);
+    by_runs.remove(std::span<const CellRun>(&runs[r], 1));
     for (std::uint32_t k = 0; k < runs[r].count; ++k) by_points.remove(points[first_point_kept++]);
   }
   for (std::size_t i = first_point_kept; i < points.size(); ++i) {

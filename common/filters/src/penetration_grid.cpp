@@ -26,7 +26,7 @@ Eigen::Vector2d PenetrationGrid::centroid(CellIndex c) const {
 }
 
 PenetrationGrid::Tile& PenetrationGrid::tileForChange(std::uint64_t key, [[maybe_unused]] int sign) {
-  // A frame's points come in scan order: most fall in the tile of the one before.
+  // A frame's runs come in scan order: most fall in the tile of the one before.
   if (change_tile_ != nullptr && key == change_key_) return *change_tile_;
   auto it = tiles_.find(key);
   if (it == tiles_.end()) {

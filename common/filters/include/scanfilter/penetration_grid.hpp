@@ -58,8 +58,6 @@ class PenetrationGrid {
   void remove(const Eigen::Vector2d& p) { change({cellOf(p), 1, p}, -1); }
   // A run counts as its points would; its sum goes into the cell's at once
   // (one rounding there per run, not per point).
-  void add(const CellRun& run) { change(run, +1); }
-  void remove(const CellRun& run) { change(run, -1); }
   void add(std::span<const CellRun> runs) {
     for (const CellRun& run : runs) change(run, +1);
   }
