@@ -49,6 +49,10 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(s.penetration.rescue_radius, d.penetration.rescue_radius);
   EXPECT_EQ(s.penetration.edge_vote_margin_deg, d.penetration.edge_vote_margin_deg);
   EXPECT_EQ(s.penetration.edge_depth_step, d.penetration.edge_depth_step);
+  EXPECT_EQ(s.penetration.free_space_check, d.penetration.free_space_check);
+  EXPECT_EQ(s.penetration.free_space_margin, d.penetration.free_space_margin);
+  EXPECT_EQ(s.penetration.free_space_dip, d.penetration.free_space_dip);
+  EXPECT_EQ(s.penetration.free_space_min_frames, d.penetration.free_space_min_frames);
   EXPECT_EQ(s.penetration.alignment.max_fit_points, d.penetration.alignment.max_fit_points);
   EXPECT_FALSE(shipped.angular_accuracy_deg) << "auto: from the sensor";
 }
@@ -58,6 +62,7 @@ TEST(FilterConfig, PaperLiteralPresetLoads) {
   EXPECT_DOUBLE_EQ(paper.params.penetration.corridor_half_width, 0.1);
   EXPECT_DOUBLE_EQ(paper.params.penetration.behind_margin, 0.1);
   EXPECT_FALSE(paper.params.penetration.rescue_persistent_points);
+  EXPECT_FALSE(paper.params.penetration.free_space_check);
   EXPECT_FALSE(paper.params.jump.keep_foreground_clusters) << "eq. 7 as printed deletes every lone return";
   EXPECT_FALSE(paper.params.jump.keep_unresolved_returns);
 }

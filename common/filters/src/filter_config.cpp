@@ -105,6 +105,10 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.read("rescue_min_count", p.rescue_min_count);
   s.read("rescue_radius", p.rescue_radius);
   s.read("rescue_min_baseline", p.rescue_min_baseline);
+  s.read("free_space_check", p.free_space_check);
+  s.read("free_space_margin", p.free_space_margin);
+  s.read("free_space_dip", p.free_space_dip);
+  s.read("free_space_min_frames", p.free_space_min_frames);
   s.take("alignment");
   readAlignment(s, p.alignment);
   s.requireRange("cell_size", p.cell_size, 1e-3, 10.0, "0.001 <= value <= 10 (m)");
@@ -125,6 +129,9 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.requireRange("rescue_min_baseline", p.rescue_min_baseline, 0.0, 100.0, "0 <= value <= 100 (m; 0: off)");
   s.requireRange("edge_vote_margin_deg", p.edge_vote_margin_deg, 0.0, 45.0, "0 <= value <= 45 (degrees; 0: off)");
   s.requireRange("edge_depth_step", p.edge_depth_step, 0.0, 10.0, "0 <= value <= 10 (m)");
+  s.requireRange("free_space_margin", p.free_space_margin, 0.0, 10.0, "0 <= value <= 10 (m)");
+  s.requireRange("free_space_dip", p.free_space_dip, 0.0, 10.0, "0 <= value <= 10 (m)");
+  s.requireRange("free_space_min_frames", p.free_space_min_frames, 1, 1e9, "an integer >= 1");
   s.rejectUnknownKeys();
 }
 

@@ -30,7 +30,9 @@ PenetrationFilter::PenetrationFilter(const PenetrationFilterParams& params)
       evidence_along_beam_(rule_, params.surface_gap),
       grid_(params.cell_size, params.obstacle_threshold),
       evidence_(params.cell_size),  // the same cells as grid_: a frame's runs go into both
-      aligner_(params.alignment) {}
+      aligner_(params.alignment),
+      free_space_(FreeSpaceCheckParams{params.edge_depth_step, params.free_space_margin, params.free_space_dip,
+                                       params.free_space_min_frames}) {}
 
 void PenetrationFilter::reset() {
   cache_.clear();
@@ -64,12 +66,12 @@ void PenetrationFilter::expireFrames(Stamp stamp) {
   }
 }
 
-void PenetrationFilter::cacheFrame(const Scan& scan, const Eigen::Vector2d& origin,
+void PenetrationFilter::cacheFrame(const Scan& scan, const SensorInfo& sensor, const Eigen::Vector2d& origin,
                                    std::span<const std::uint8_t> labels) {
   // Without a baseline the frame's returns are evidence at once, added here
   // (its votes' runs, then the others'); with one, admitEvidence adds them later.
   const bool evidence_now = params_.rescue_persistent_points && !evidenceWaitsForBaseline();
-  CachedFrame frame{scan.stamp, origin, {}, {}, evidence_now};
+  CachedFrame frame{scan.stamp, origin, {}, {}, evidence_now, std::nullopt};
   // Only with the switch on: every frame goes through here.
   const int edge_beams = edgeHalfWidthBeams(scan);
   const std::vector<bool> edge =
@@ -86,6 +88,7 @@ void PenetrationFilter::cacheFrame(const Scan& scan, const Eigen::Vector2d& orig
   }
   grid_.add(frame.votes);
   if (evidence_now) addRescueEvidence(frame);
+  if (params_.free_space_check) frame.image.emplace(scan, sensor, correction_);
   cache_.push_back(std::move(frame));
 }
 
@@ -129,7 +132,7 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
   } else {
     placeFrame(scan, sensor);
   }
-  cacheFrame(scan, origin, labels);  // where the alignment put it: the cache stays self-consistent
+  cacheFrame(scan, sensor, origin, labels);  // where the alignment put it: the cache stays self-consistent
 }
 
 int PenetrationFilter::edgeHalfWidthBeams(const Scan& scan) const {
@@ -167,6 +170,7 @@ PenetrationFilter::Judgement PenetrationFilter::alignAndJudge(const Scan& scan, 
     out.correction = fit.correction * correction_;
   }
   judgePoints(origin, labels);
+  if (params_.free_space_check) markSeenThrough(scan, origin, labels);
   out.judged = true;
   return out;
 }
@@ -217,6 +221,24 @@ void PenetrationFilter::rescuePersistentPoints(std::span<std::uint8_t> labels) {
     if (labels[i] != static_cast<std::uint8_t>(PointCode::kJump)) continue;
     if (evidenceAround(points_[i]) >= params_.rescue_min_count)
       labels[i] = static_cast<std::uint8_t>(PointCode::kValid);
+  }
+}
+
+void PenetrationFilter::markSeenThrough(const Scan& scan, const Eigen::Vector2d& origin,
+                                        std::span<std::uint8_t> labels) {
+  const double baseline_sq = params_.rescue_min_baseline * params_.rescue_min_baseline;
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid) || !free_space_.isCandidate(scan, i)) continue;
+    // A return that frames from elsewhere saw again is on a surface.
+    if (params_.rescue_persistent_points && evidenceAround(points_[i]) > 0) continue;
+    int through = 0, hits = 0;
+    for (const CachedFrame& frame : cache_) {
+      if ((frame.image->origin() - origin).squaredNorm() < baseline_sq) continue;  // no parallax
+      const FreeSpaceCheck::Sighting s = free_space_.sighting(*frame.image, points_[i]);
+      through += s == FreeSpaceCheck::Sighting::kThrough;
+      hits += s == FreeSpaceCheck::Sighting::kHit;
+    }
+    if (free_space_.seenThrough(through, hits)) labels[i] = static_cast<std::uint8_t>(PointCode::kJump);
   }
 }
 

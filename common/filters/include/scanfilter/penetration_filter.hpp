@@ -11,12 +11,14 @@
 
 #include "scanfilter/beam_bundle.hpp"
 #include "scanfilter/frame_alignment.hpp"
+#include "scanfilter/free_space_check.hpp"
 #include "scanfilter/implementation.hpp"
 #include "scanfilter/obstacle_window.hpp"
-#include "scanfilter/penetration_filter_params.hpp"
 #include "scanfilter/penetration_evidence.hpp"
+#include "scanfilter/penetration_filter_params.hpp"
 #include "scanfilter/penetration_grid.hpp"
 #include "scanfilter/penetration_rule.hpp"
+#include "scanfilter/range_image.hpp"
 #include "scanfilter/scan.hpp"
 #include "scanfilter/scan_geometry.hpp"
 #include "scanfilter/sensor_info.hpp"
@@ -94,6 +96,7 @@ class PenetrationFilter {
     std::vector<CellRun> votes;   // in grid_
     std::vector<CellRun> others;  // the other returns, in evidence_ only
     bool in_evidence = false;     // its returns are in evidence_ (rescue_min_baseline)
+    std::optional<RangeImage> image;  // its ranges, for the free-space check (when on)
   };
   // Where a frame lies: points_ under the pose and the running correction;
   // returns the sensor origin there.
@@ -108,7 +111,11 @@ class PenetrationFilter {
   int evidenceAround(const Eigen::Vector2d& p) const;
   void resetOnPoseJump(const Eigen::Vector2d& origin, Stamp stamp);
   void expireFrames(Stamp stamp);
-  void cacheFrame(const Scan& scan, const Eigen::Vector2d& origin, std::span<const std::uint8_t> labels);
+  void cacheFrame(const Scan& scan, const SensorInfo& sensor, const Eigen::Vector2d& origin,
+                  std::span<const std::uint8_t> labels);
+  // free_space_check: kept returns that far cached frames looked through
+  // become jump points (points_ and `origin` placed as judged).
+  void markSeenThrough(const Scan& scan, const Eigen::Vector2d& origin, std::span<std::uint8_t> labels);
   // With rescue_min_baseline: the cached frames taken at least that far from
   // `origin` join the evidence; all of them while none is.
   void admitEvidence(const Eigen::Vector2d& origin);
@@ -127,6 +134,7 @@ class PenetrationFilter {
   std::size_t frames_seen_ = 0;
   std::size_t resets_ = 0;
   FrameAligner aligner_;
+  FreeSpaceCheck free_space_;
   // Odometry pose -> the cache's frame: the sum of the frames' alignments
   // since the last reset.
   Eigen::Isometry2d correction_ = Eigen::Isometry2d::Identity();

@@ -1,0 +1,54 @@
+#pragma once
+#include <cstddef>
+#include <span>
+
+#include <Eigen/Core>
+
+#include "scanfilter/range_image.hpp"
+#include "scanfilter/scan.hpp"
+
+namespace scanfilter {
+
+struct FreeSpaceCheckParams {
+  double depth_step = 0.15;  // m, a neighbour this much farther (or none) makes a return a candidate
+  double margin = 0.10;      // m, a cached beam ending this much beyond a point passed through it
+  double dip = 0.05;         // m, ... unless it ended this much short of its outer neighbours
+  int min_frames = 1;        // frames that must have passed through the point
+};
+
+// Beyond the paper: is a return in space that other viewpoints saw through?
+//
+// A return on a real surface blocks the beams of every other viewpoint that
+// looks its way: they end at it. A mixed return (the footprint straddling an
+// edge) or a displaced one lies in free space between surfaces, where
+// cached frames taken from elsewhere looked straight through. Only returns
+// beside a depth edge are candidates (a neighbour farther by depth_step or
+// no neighbour return): that is where mixed returns are.
+//
+// A cached frame passed through point p when the two beams that bracket p's
+// bearing both returned farther than p by `margin` and neither is `dip`
+// shorter than the beams outside them: a thin leg standing partly in a beam
+// (a triangulation scanner's beam sweeps a whole step, a time-of-flight
+// beam is wider than a step) pulls the return short of the background
+// without ending it at the leg, and is not counted as passed through. A
+// frame hit p when either beam ended within `margin` of it.
+class FreeSpaceCheck {
+ public:
+  enum class Sighting { kNone, kThrough, kHit };
+
+  explicit FreeSpaceCheck(const FreeSpaceCheckParams& params) : params_(params) {}
+
+  // Whether return i of `scan` is beside a depth edge.
+  bool isCandidate(const Scan& scan, std::size_t i) const;
+
+  // What one cached frame's beams say about point p.
+  Sighting sighting(const RangeImage& frame, const Eigen::Vector2d& p) const;
+
+  // The verdict over the frames' sightings.
+  bool seenThrough(int through, int hits) const { return through >= params_.min_frames && through > hits; }
+
+ private:
+  FreeSpaceCheckParams params_;
+};
+
+}  // namespace scanfilter

@@ -1,0 +1,34 @@
+#include "scanfilter/free_space_check.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "scanfilter/scan_geometry.hpp"
+
+namespace scanfilter {
+
+bool FreeSpaceCheck::isCandidate(const Scan& scan, std::size_t i) const {
+  const std::size_t n = scan.size();
+  const bool full_turn = isFullTurn(scan);
+  const auto fartherAt = [&](std::size_t j) { return !scan.hasReturn(j) || scan.ranges[j] > scan.ranges[i] + params_.depth_step; };
+  if (i > 0 ? fartherAt(i - 1) : full_turn && fartherAt(n - 1)) return true;
+  return i + 1 < n ? fartherAt(i + 1) : full_turn && fartherAt(0);
+}
+
+FreeSpaceCheck::Sighting FreeSpaceCheck::sighting(const RangeImage& frame, const Eigen::Vector2d& p) const {
+  const auto b = frame.bracket(p);
+  if (!b || !std::isfinite(b->first) || !std::isfinite(b->second)) return Sighting::kNone;
+  const double nearer = std::min(b->first, b->second);
+  if (nearer > b->distance + params_.margin) {
+    // The outer beams show the background; a dip below it is something
+    // standing partly in the bracketing beams.
+    if (!std::isfinite(b->before) || !std::isfinite(b->after)) return Sighting::kNone;
+    if (nearer < std::min(b->before, b->after) - params_.dip) return Sighting::kNone;
+    return Sighting::kThrough;
+  }
+  const bool hit = std::abs(b->first - b->distance) <= params_.margin ||
+                   std::abs(b->second - b->distance) <= params_.margin;
+  return hit ? Sighting::kHit : Sighting::kNone;
+}
+
+}  // namespace scanfilter

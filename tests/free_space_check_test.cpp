@@ -1,0 +1,179 @@
+// The free-space check (Beyond the paper 17): range images looked up by
+// bearing, one frame's sighting of a point, and the check inside step 2.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "scan_builder.hpp"
+#include "scanfilter/free_space_check.hpp"
+#include "scanfilter/penetration_filter.hpp"
+#include "scanfilter/point_code.hpp"
+#include "scanfilter/range_image.hpp"
+
+namespace scanfilter {
+namespace {
+
+using test::castScan;
+using test::kDeg;
+using test::World;
+
+constexpr auto kValid = static_cast<std::uint8_t>(PointCode::kValid);
+constexpr auto kJump = static_cast<std::uint8_t>(PointCode::kJump);
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// A full turn of 360 beams, every range `range`, from the origin.
+Scan flatScan(double range) {
+  Scan scan;
+  scan.angle_min = 0.0;
+  scan.angle_increment = 1.0 * kDeg;
+  scan.ranges.assign(360, range);
+  return scan;
+}
+
+Eigen::Vector2d atBearing(double degrees, double distance) {
+  return distance * Eigen::Vector2d(std::cos(degrees * kDeg), std::sin(degrees * kDeg));
+}
+
+TEST(RangeImage, BracketsAPointByItsWorldBearing) {
+  Scan scan = flatScan(3.0);
+  scan.ranges[10] = 1.0;
+  scan.ranges[11] = 2.0;
+  const RangeImage image(scan, test::simpleSensor(), Eigen::Isometry2d::Identity());
+  const auto b = image.bracket(atBearing(10.5, 1.5));
+  ASSERT_TRUE(b);
+  EXPECT_FLOAT_EQ(b->first, 1.0f);
+  EXPECT_FLOAT_EQ(b->second, 2.0f);
+  EXPECT_FLOAT_EQ(b->before, 3.0f);
+  EXPECT_DOUBLE_EQ(b->distance, 1.5);
+  // Turned 5° by the alignment's correction, beams 10-11 look at 15-16°.
+  Eigen::Isometry2d turned = Eigen::Isometry2d::Identity();
+  turned.rotate(5.0 * kDeg);
+  const RangeImage rotated(scan, test::simpleSensor(), turned);
+  EXPECT_FLOAT_EQ(rotated.bracket(atBearing(15.5, 1.5))->first, 1.0f);
+  // Across the seam of a full turn: beams 359 and 0.
+  scan.ranges[359] = 0.5;
+  const RangeImage seam(scan, test::simpleSensor(), Eigen::Isometry2d::Identity());
+  const auto s = seam.bracket(atBearing(-0.5, 1.0));
+  ASSERT_TRUE(s);
+  EXPECT_FLOAT_EQ(s->first, 0.5f);
+  EXPECT_FLOAT_EQ(s->second, 3.0f);
+}
+
+TEST(RangeImage, NothingOutsideAPartialTurn) {
+  Scan scan = flatScan(3.0);
+  scan.ranges.resize(180);  // 0-179°
+  const RangeImage image(scan, test::simpleSensor(), Eigen::Isometry2d::Identity());
+  EXPECT_TRUE(image.bracket(atBearing(90.0, 1.0)));
+  EXPECT_FALSE(image.bracket(atBearing(-90.0, 1.0)));
+  EXPECT_FALSE(image.bracket(atBearing(179.5, 1.0))) << "beam 179 has no right-hand partner";
+  EXPECT_FALSE(image.bracket(Eigen::Vector2d::Zero())) << "at the sensor there is no bearing";
+}
+
+TEST(FreeSpaceCheck, ASightingIsThroughHitOrNothing) {
+  const FreeSpaceCheck check(FreeSpaceCheckParams{});
+  const Eigen::Vector2d p = atBearing(10.5, 1.0);
+  const auto sightingWith = [&](double first, double second, double outer = 3.0) {
+    Scan scan = flatScan(outer);
+    scan.ranges[10] = first;
+    scan.ranges[11] = second;
+    return check.sighting(RangeImage(scan, test::simpleSensor(), Eigen::Isometry2d::Identity()), p);
+  };
+  using S = FreeSpaceCheck::Sighting;
+  EXPECT_EQ(sightingWith(3.0, 3.0), S::kThrough) << "both beams went on to the wall behind";
+  EXPECT_EQ(sightingWith(1.05, 3.0), S::kHit) << "one beam ended at the point";
+  EXPECT_EQ(sightingWith(2.0, 3.0), S::kNone) << "a dip: something stood partly in the beam";
+  EXPECT_EQ(sightingWith(3.0, 2.96), S::kThrough) << "a slanted background is no dip";
+  EXPECT_EQ(sightingWith(0.5, 3.0), S::kNone) << "ended short of the point: it says nothing";
+  EXPECT_EQ(sightingWith(kNaN, 3.0), S::kNone) << "no return: unknown, not free";
+}
+
+TEST(FreeSpaceCheck, CandidatesAreBesideADepthEdge) {
+  const FreeSpaceCheck check(FreeSpaceCheckParams{});
+  Scan scan = flatScan(2.0);
+  scan.ranges[20] = 2.1;  // within the depth step: the same surface
+  scan.ranges[30] = 3.0;
+  scan.ranges[40] = kNaN;
+  EXPECT_FALSE(check.isCandidate(scan, 19));
+  EXPECT_FALSE(check.isCandidate(scan, 21)) << "its neighbour is nearer, not farther";
+  EXPECT_TRUE(check.isCandidate(scan, 29));
+  EXPECT_TRUE(check.isCandidate(scan, 31));
+  EXPECT_TRUE(check.isCandidate(scan, 39)) << "beside a beam without a return";
+  scan.ranges[359] = 3.0;
+  EXPECT_TRUE(check.isCandidate(scan, 0)) << "a full turn wraps";
+}
+
+TEST(FreeSpaceCheck, AtLeastMinFramesAndMoreThanHit) {
+  FreeSpaceCheckParams p;
+  p.min_frames = 2;
+  const FreeSpaceCheck check(p);
+  EXPECT_FALSE(check.seenThrough(1, 0));
+  EXPECT_TRUE(check.seenThrough(2, 0));
+  EXPECT_FALSE(check.seenThrough(2, 2));
+  EXPECT_TRUE(check.seenThrough(3, 2));
+}
+
+// Step 2 on a room with a leg 1 m ahead, the sensor moving sideways 5 cm a
+// frame (10 Hz), so that earlier frames see behind the leg, every return
+// valid (step 1 found nothing): in the last frame one beam beside the leg is
+// made a mixed return, halfway between the leg and the wall behind. Returns the labels of the last frame for both
+// implementations, and the beams of the mixed return and of the leg.
+struct LastFrame {
+  std::vector<std::uint8_t> reference, fast;
+  std::size_t mixed = 0, leg = 0;
+};
+
+LastFrame filterWithAMixedReturn(const PenetrationFilterParams& p) {
+  const SensorInfo sensor = test::simpleSensor();
+  const World world = World{}
+                          .wall({3, -3}, {3, 3})
+                          .wall({-3, -3}, {3, -3})
+                          .wall({-3, 3}, {3, 3})
+                          .wall({-3, -3}, {-3, 3})
+                          .leg({1.0, 0.0}, 0.03);
+  auto reference = makePenetrationFilter(p, Implementation::kReference);
+  auto fast = makePenetrationFilter(p, Implementation::kFast);
+  LastFrame out;
+  constexpr int kFrames = 16;
+  for (int k = 0; k < kFrames; ++k) {
+    const Pose2 pose{0.0, 0.05 * k, 0.0};
+    Scan scan = castScan(world, pose, sensor, 360, 0.1 * k);
+    out.leg = test::beamTowards(scan, sensor, std::atan2(-pose.y, 1.0));
+    if (k == kFrames - 1) {
+      // The first beam past the leg's edge that reaches the wall.
+      out.mixed = out.leg;
+      while (scan.ranges[out.mixed] < 2.0) ++out.mixed;
+      scan.ranges[out.mixed] = 0.5 * (scan.ranges[out.mixed - 1] + scan.ranges[out.mixed]);
+    }
+    std::vector<std::uint8_t> labels(scan.size());
+    for (std::size_t i = 0; i < scan.size(); ++i)
+      labels[i] = scan.hasReturn(i) ? kValid : static_cast<std::uint8_t>(PointCode::kNoReturn);
+    out.reference = labels;
+    out.fast = labels;
+    reference->apply(scan, sensor, out.reference);
+    fast->apply(scan, sensor, out.fast);
+  }
+  return out;
+}
+
+TEST(FreeSpaceCheck, StepTwoRemovesAMixedReturnAndKeepsTheLeg) {
+  const LastFrame on = filterWithAMixedReturn(PenetrationFilterParams{});
+  EXPECT_EQ(on.reference, on.fast) << "both implementations run the same check";
+  EXPECT_EQ(on.fast[on.mixed], kJump) << "earlier frames from 0.25 m+ away saw the wall through it";
+  EXPECT_EQ(on.fast[on.leg], kValid) << "the leg blocked those frames' beams: it is hit, not seen through";
+  EXPECT_EQ(std::count(on.fast.begin(), on.fast.end(), kJump), 1) << "nothing else in the room is in free space";
+
+  PenetrationFilterParams off;
+  off.free_space_check = false;
+  EXPECT_EQ(filterWithAMixedReturn(off).fast[on.mixed], kValid) << "the paper's step 2 keeps it";
+
+  PenetrationFilterParams no_parallax;
+  no_parallax.rescue_min_baseline = 2.0;  // no cached frame is that far
+  EXPECT_EQ(filterWithAMixedReturn(no_parallax).fast[on.mixed], kValid)
+      << "frames from (nearly) the same place say nothing";
+}
+
+}  // namespace
+}  // namespace scanfilter
