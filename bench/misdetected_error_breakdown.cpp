@@ -32,7 +32,6 @@
 using namespace scanfilter;
 
 namespace {
-long g_hist[4] = {};
 
 enum Reason { kFound, kNotJudged, kStepOne, kSurfaceUnseen, kJustBehind, kOther, kReasons };
 constexpr const char* kReasonNames[kReasons] = {"found",          "not judged",  "taken by step 1",
@@ -96,7 +95,6 @@ Counts breakdown(const std::string& scene_name, const std::string& sensor, std::
       else if (near_surface[i] <= pen.obstacle_threshold) r = kSurfaceUnseen;
       else if (behind[i] < pen.own_surface_margin + pen.own_surface_margin_per_m * scan.ranges[i]) r = kJustBehind;
       ++counts.by_reason[r];
-      if (r == kSurfaceUnseen) ++g_hist[std::min(near_surface[i], 3)];
     }
   }
   return counts;
@@ -122,8 +120,6 @@ int main(int argc, char** argv) {
     std::printf("| %s | %ld |", name.c_str(), c.total());
     for (long n : c.by_reason) std::printf(" %ld (%.0f %%) |", n, c.total() > 0 ? 100.0 * n / c.total() : 0.0);
     std::printf("\n");
-    std::printf("unseen max-cell-count hist: 0:%ld 1:%ld 2:%ld 3+:%ld\n", g_hist[0], g_hist[1], g_hist[2], g_hist[3]);
-    for (auto& h : g_hist) h = 0;
   }
   return 0;
 }
