@@ -86,6 +86,7 @@ TEST(FreeSpaceCheck, ASightingIsThroughHitOrNothing) {
   EXPECT_EQ(sightingWith(1.05, 3.0), S::kHit) << "one beam ended at the point";
   EXPECT_EQ(sightingWith(2.0, 3.0), S::kNone) << "a dip: something stood partly in the beam";
   EXPECT_EQ(sightingWith(3.0, 2.96), S::kThrough) << "a slanted background is no dip";
+  EXPECT_EQ(sightingWith(3.0, 3.0, 1.05), S::kNone) << "the outer beams end at the point: a beam of pose error";
   EXPECT_EQ(sightingWith(0.5, 3.0), S::kNone) << "ended short of the point: it says nothing";
   EXPECT_EQ(sightingWith(kNaN, 3.0), S::kNone) << "no return: unknown, not free";
 }

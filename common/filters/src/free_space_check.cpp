@@ -18,12 +18,16 @@ bool FreeSpaceCheck::isCandidate(const Scan& scan, std::size_t i) const {
 FreeSpaceCheck::Sighting FreeSpaceCheck::sighting(const RangeImage& frame, const Eigen::Vector2d& p) const {
   const auto b = frame.bracket(p);
   if (!b || !std::isfinite(b->first) || !std::isfinite(b->second)) return Sighting::kNone;
+  const double beyond = b->distance + params_.margin;
   const double nearer = std::min(b->first, b->second);
-  if (nearer > b->distance + params_.margin) {
-    // The outer beams show the background; a dip below it is something
-    // standing partly in the bracketing beams.
+  if (nearer > beyond) {
+    // The outer beams too: with a beam of pose error between the frames, an
+    // edge point's bracket can fall on the background just beside the edge.
     if (!std::isfinite(b->before) || !std::isfinite(b->after)) return Sighting::kNone;
-    if (nearer < std::min(b->before, b->after) - params_.dip) return Sighting::kNone;
+    const double outer = std::min(b->before, b->after);
+    if (outer <= beyond) return Sighting::kNone;
+    // A dip below the outer beams is something standing partly in the bracketing ones.
+    if (nearer < outer - params_.dip) return Sighting::kNone;
     return Sighting::kThrough;
   }
   const bool hit = std::abs(b->first - b->distance) <= params_.margin ||

@@ -26,12 +26,14 @@ struct FreeSpaceCheckParams {
 // no neighbour return): that is where mixed returns are.
 //
 // A cached frame passed through point p when the two beams that bracket p's
-// bearing both returned farther than p by `margin` and neither is `dip`
-// shorter than the beams outside them: a thin leg standing partly in a beam
-// (a triangulation scanner's beam sweeps a whole step, a time-of-flight
-// beam is wider than a step) pulls the return short of the background
-// without ending it at the leg, and is not counted as passed through. A
-// frame hit p when either beam ended within `margin` of it.
+// bearing and the one outside each of them all returned farther than p by
+// `margin` (a beam of pose error between the frames must not make an edge
+// point look passed through), and neither bracketing beam is `dip` shorter
+// than the outer ones: a thin leg standing partly in a beam (a triangulation
+// scanner's beam sweeps a whole step, a time-of-flight beam is wider than a
+// step) pulls the return short of the background without ending it at the
+// leg, and is not counted as passed through. A frame hit p when either
+// bracketing beam ended within `margin` of it.
 class FreeSpaceCheck {
  public:
   enum class Sighting { kNone, kThrough, kHit };
