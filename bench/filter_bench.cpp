@@ -213,7 +213,9 @@ void BM_PenetrationStream(benchmark::State& state) {
   const int beams = static_cast<int>(state.range(0));
   const bool cold = state.range(1) != 0;
   const HallTour& tour = hallTour(beams);
-  auto filter = makePenetrationFilter(tour.params, Implementation::kFast);
+  PenetrationFilterParams params = tour.params;
+  params.free_space_check = state.range(2) != 0;  // its cost: the same stream without it
+  auto filter = makePenetrationFilter(params, Implementation::kFast);
   std::vector<std::uint8_t> labels;
   std::size_t next = 0;
   // Untimed: the warm-up frames and a full cache (the steady state a
@@ -247,7 +249,11 @@ BENCHMARK_CAPTURE(BM_PenetrationJudge, reference, Implementation::kReference)
     ->ArgsProduct({{360, 1080, 3600}, {100, 1000}})->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_PenetrationJudge, fast, Implementation::kFast)
     ->ArgsProduct({{360, 1080, 3600}, {100, 1000}})->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_PenetrationStream)->ArgsProduct({{360, 3600}, {0, 1}})->ArgNames({"beams", "cold"})
+// The shipped step 2 warm and cold, and warm without the free-space check.
+BENCHMARK(BM_PenetrationStream)
+    ->ArgNames({"beams", "cold", "free_space"})
+    ->Args({360, 0, 1})->Args({360, 1, 1})->Args({360, 0, 0})
+    ->Args({3600, 0, 1})->Args({3600, 1, 1})->Args({3600, 0, 0})
     ->Unit(benchmark::kMicrosecond);
 
 BENCHMARK_MAIN();

@@ -73,11 +73,11 @@ struct PenetrationFilterParams {
   // edge becomes a jump point when cached frames taken from at least
   // rescue_min_baseline away looked through where it lies (the four beams
   // around its bearing went on beyond it by free_space_margin) more often
-  // than they ended at it, and
-  // no such frame put a return within rescue_radius of it: a mixed or
-  // displaced return in free space, which eq. 5 joined to a surface's
-  // cluster or which stands in front of both sides like a thin leg. The
-  // depth edge is edge_depth_step. false = the paper.
+  // than they ended at it, and no such frame put a return within
+  // rescue_radius of it: a mixed or displaced return in free space, which
+  // eq. 5 joined to a surface's cluster or which stands in front of both
+  // sides like a thin leg. The depth edge is edge_depth_step. false = the
+  // paper.
   bool free_space_check = true;
   double free_space_margin = 0.10;  // m
   double free_space_dip = 0.05;     // m, a bracketing beam this much short of the outer ones does not count
