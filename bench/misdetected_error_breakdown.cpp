@@ -3,12 +3,14 @@
 // simulated misdetected return (a ghost behind a mirror, a return through
 // glass) that the filter keeps is put in the first class that explains it:
 //   - not judged: the frame came before min_frames or did not fit the cache;
-//   - taken by step 1: removed, but as a jump point;
+//   - labelled jump: removed, but as a jump point (by step 1 or by step 2's
+//     free-space check);
 //   - surface unseen: no cached cell within one cell of where the beam really
 //     met the surface it went through holds more than obs_th returns (the
 //     mirror or pane is rarely seen directly);
 //   - just behind: the return lies within the own-surface margin of that
-//     surface (the penetration model cannot tell it from the surface);
+//     surface (own_surface_margin and _per_m; the grazing widening is not
+//     counted here): the penetration model cannot tell it from the surface;
 //   - other: the cells are there and far enough, yet not on both sides of
 //     the beam within surface_gap.
 //   build/bench/misdetected_error_breakdown [--seed 2] [--sensor triangulation]
@@ -33,8 +35,8 @@ using namespace scanfilter;
 
 namespace {
 
-enum Reason { kFound, kNotJudged, kStepOne, kSurfaceUnseen, kJustBehind, kOther, kReasons };
-constexpr const char* kReasonNames[kReasons] = {"found",          "not judged",  "taken by step 1",
+enum Reason { kFound, kNotJudged, kLabelledJump, kSurfaceUnseen, kJustBehind, kOther, kReasons };
+constexpr const char* kReasonNames[kReasons] = {"found",          "not judged",  "labelled jump",
                                                 "surface unseen", "just behind", "other"};
 
 // The most returns any cell within one cell of p holds in the cache.
@@ -90,7 +92,7 @@ Counts breakdown(const std::string& scene_name, const std::string& sensor, std::
       if (near_surface[i] < 0) continue;
       Reason r = kOther;
       if (labels[i] == static_cast<std::uint8_t>(PointCode::kMisdetected)) r = kFound;
-      else if (labels[i] == static_cast<std::uint8_t>(PointCode::kJump)) r = kStepOne;
+      else if (labels[i] == static_cast<std::uint8_t>(PointCode::kJump)) r = kLabelledJump;
       else if (!judged) r = kNotJudged;
       else if (near_surface[i] <= pen.obstacle_threshold) r = kSurfaceUnseen;
       else if (behind[i] < pen.own_surface_margin + pen.own_surface_margin_per_m * scan.ranges[i]) r = kJustBehind;

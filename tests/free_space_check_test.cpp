@@ -33,6 +33,18 @@ Scan flatScan(double range) {
   return scan;
 }
 
+// Every return kept, as the filter labels a frame it leaves alone.
+std::vector<std::uint8_t> allKept(const Scan& scan) {
+  std::vector<std::uint8_t> labels(scan.size(), kValid);
+  for (std::size_t i = 0; i < scan.size(); ++i)
+    if (!scan.hasReturn(i)) labels[i] = static_cast<std::uint8_t>(PointCode::kNoReturn);
+  return labels;
+}
+
+RangeImage imageOf(const Scan& scan, const Eigen::Isometry2d& correction = Eigen::Isometry2d::Identity()) {
+  return RangeImage(scan, test::simpleSensor(), correction, allKept(scan));
+}
+
 Eigen::Vector2d atBearing(double degrees, double distance) {
   return distance * Eigen::Vector2d(std::cos(degrees * kDeg), std::sin(degrees * kDeg));
 }
@@ -41,7 +53,7 @@ TEST(RangeImage, BracketsAPointByItsWorldBearing) {
   Scan scan = flatScan(3.0);
   scan.ranges[10] = 1.0;
   scan.ranges[11] = 2.0;
-  const RangeImage image(scan, test::simpleSensor(), Eigen::Isometry2d::Identity());
+  const RangeImage image = imageOf(scan);
   const auto b = image.bracket(atBearing(10.5, 1.5));
   ASSERT_TRUE(b);
   EXPECT_FLOAT_EQ(b->first, 1.0f);
@@ -51,11 +63,11 @@ TEST(RangeImage, BracketsAPointByItsWorldBearing) {
   // Turned 5° by the alignment's correction, beams 10-11 look at 15-16°.
   Eigen::Isometry2d turned = Eigen::Isometry2d::Identity();
   turned.rotate(5.0 * kDeg);
-  const RangeImage rotated(scan, test::simpleSensor(), turned);
+  const RangeImage rotated = imageOf(scan, turned);
   EXPECT_FLOAT_EQ(rotated.bracket(atBearing(15.5, 1.5))->first, 1.0f);
   // Across the seam of a full turn: beams 359 and 0.
   scan.ranges[359] = 0.5;
-  const RangeImage seam(scan, test::simpleSensor(), Eigen::Isometry2d::Identity());
+  const RangeImage seam = imageOf(scan);
   const auto s = seam.bracket(atBearing(-0.5, 1.0));
   ASSERT_TRUE(s);
   EXPECT_FLOAT_EQ(s->first, 0.5f);
@@ -65,34 +77,59 @@ TEST(RangeImage, BracketsAPointByItsWorldBearing) {
 TEST(RangeImage, NothingOutsideAPartialTurn) {
   Scan scan = flatScan(3.0);
   scan.ranges.resize(180);  // 0-179°
-  const RangeImage image(scan, test::simpleSensor(), Eigen::Isometry2d::Identity());
+  const RangeImage image = imageOf(scan);
   EXPECT_TRUE(image.bracket(atBearing(90.0, 1.0)));
   EXPECT_FALSE(image.bracket(atBearing(-90.0, 1.0)));
   EXPECT_FALSE(image.bracket(atBearing(179.5, 1.0))) << "beam 179 has no right-hand partner";
   EXPECT_FALSE(image.bracket(Eigen::Vector2d::Zero())) << "at the sensor there is no bearing";
 }
 
+// A 240° clockwise scanner (a URG), beam 0 at +120°: its far end lies more
+// than 180° from beam 0.
+TEST(RangeImage, APartialTurnWiderThanAHalfTurnClockwise) {
+  Scan scan = flatScan(3.0);
+  scan.ranges.resize(240);
+  scan.angle_min = -120.0 * kDeg;  // clockwise: beam i looks at 120° - i
+  scan.ranges[220] = 1.0;  // at 120 - 220 = -100°
+  SensorInfo sensor = test::simpleSensor();
+  sensor.direction = BeamDirection::kCw;
+  const RangeImage image(scan, sensor, Eigen::Isometry2d::Identity(), allKept(scan));
+  const auto b = image.bracket(atBearing(-99.5, 0.5));  // between beams 219 and 220
+  ASSERT_TRUE(b);
+  EXPECT_FLOAT_EQ(b->second, 1.0f);
+  EXPECT_FALSE(image.bracket(atBearing(150.0, 0.5))) << "behind the scanner";
+}
+
+TEST(RangeImage, ReturnsTheFilterRemovedAreNoReturn) {
+  Scan scan = flatScan(3.0);
+  std::vector<std::uint8_t> labels = allKept(scan);
+  labels[10] = static_cast<std::uint8_t>(PointCode::kMisdetected);  // a ghost through a pane
+  const RangeImage image(scan, test::simpleSensor(), Eigen::Isometry2d::Identity(), labels);
+  EXPECT_TRUE(std::isnan(image.bracket(atBearing(10.5, 1.0))->first));
+}
+
 TEST(FreeSpaceCheck, ASightingIsThroughHitOrNothing) {
-  const FreeSpaceCheck check(FreeSpaceCheckParams{});
+  const FreeSpaceCheck check(PenetrationFilterParams{});
   const Eigen::Vector2d p = atBearing(10.5, 1.0);
   const auto sightingWith = [&](double first, double second, double outer = 3.0) {
     Scan scan = flatScan(outer);
     scan.ranges[10] = first;
     scan.ranges[11] = second;
-    return check.sighting(RangeImage(scan, test::simpleSensor(), Eigen::Isometry2d::Identity()), p);
+    return check.sighting(imageOf(scan), p);
   };
   using S = FreeSpaceCheck::Sighting;
   EXPECT_EQ(sightingWith(3.0, 3.0), S::kThrough) << "both beams went on to the wall behind";
   EXPECT_EQ(sightingWith(1.05, 3.0), S::kHit) << "one beam ended at the point";
   EXPECT_EQ(sightingWith(2.0, 3.0), S::kNone) << "a dip: something stood partly in the beam";
   EXPECT_EQ(sightingWith(3.0, 2.96), S::kThrough) << "a slanted background is no dip";
-  EXPECT_EQ(sightingWith(3.0, 3.0, 1.05), S::kNone) << "the outer beams end at the point: a beam of pose error";
+  EXPECT_EQ(sightingWith(3.0, 3.0, 1.05), S::kNone)
+      << "the outer beams end at the point: a beam of pose error";
   EXPECT_EQ(sightingWith(0.5, 3.0), S::kNone) << "ended short of the point: it says nothing";
   EXPECT_EQ(sightingWith(kNaN, 3.0), S::kNone) << "no return: unknown, not free";
 }
 
 TEST(FreeSpaceCheck, CandidatesAreBesideADepthEdge) {
-  const FreeSpaceCheck check(FreeSpaceCheckParams{});
+  const FreeSpaceCheck check(PenetrationFilterParams{});
   Scan scan = flatScan(2.0);
   scan.ranges[20] = 2.1;  // within the depth step: the same surface
   scan.ranges[30] = 3.0;
@@ -107,8 +144,8 @@ TEST(FreeSpaceCheck, CandidatesAreBesideADepthEdge) {
 }
 
 TEST(FreeSpaceCheck, AtLeastMinFramesAndMoreThanHit) {
-  FreeSpaceCheckParams p;
-  p.min_frames = 2;
+  PenetrationFilterParams p;
+  p.free_space_min_frames = 2;
   const FreeSpaceCheck check(p);
   EXPECT_FALSE(check.seenThrough(1, 0));
   EXPECT_TRUE(check.seenThrough(2, 0));

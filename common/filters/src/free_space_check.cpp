@@ -10,7 +10,7 @@ namespace scanfilter {
 bool FreeSpaceCheck::isCandidate(const Scan& scan, std::size_t i) const {
   const std::size_t n = scan.size();
   const bool full_turn = isFullTurn(scan);
-  const auto fartherAt = [&](std::size_t j) { return !scan.hasReturn(j) || scan.ranges[j] > scan.ranges[i] + params_.depth_step; };
+  const auto fartherAt = [&](std::size_t j) { return !scan.hasReturn(j) || scan.ranges[j] > scan.ranges[i] + depth_step_; };
   if (i > 0 ? fartherAt(i - 1) : full_turn && fartherAt(n - 1)) return true;
   return i + 1 < n ? fartherAt(i + 1) : full_turn && fartherAt(0);
 }
@@ -18,7 +18,7 @@ bool FreeSpaceCheck::isCandidate(const Scan& scan, std::size_t i) const {
 FreeSpaceCheck::Sighting FreeSpaceCheck::sighting(const RangeImage& frame, const Eigen::Vector2d& p) const {
   const auto b = frame.bracket(p);
   if (!b || !std::isfinite(b->first) || !std::isfinite(b->second)) return Sighting::kNone;
-  const double beyond = b->distance + params_.margin;
+  const double beyond = b->distance + margin_;
   const double nearer = std::min(b->first, b->second);
   if (nearer > beyond) {
     // The outer beams too: with a beam of pose error between the frames, an
@@ -27,11 +27,11 @@ FreeSpaceCheck::Sighting FreeSpaceCheck::sighting(const RangeImage& frame, const
     const double outer = std::min(b->before, b->after);
     if (outer <= beyond) return Sighting::kNone;
     // A dip below the outer beams is something standing partly in the bracketing ones.
-    if (nearer < outer - params_.dip) return Sighting::kNone;
+    if (nearer < outer - dip_) return Sighting::kNone;
     return Sighting::kThrough;
   }
-  const bool hit = std::abs(b->first - b->distance) <= params_.margin ||
-                   std::abs(b->second - b->distance) <= params_.margin;
+  const bool hit = std::abs(b->first - b->distance) <= margin_ ||
+                   std::abs(b->second - b->distance) <= margin_;
   return hit ? Sighting::kHit : Sighting::kNone;
 }
 

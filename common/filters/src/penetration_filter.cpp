@@ -1,6 +1,7 @@
 #include "scanfilter/penetration_filter.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -31,8 +32,7 @@ PenetrationFilter::PenetrationFilter(const PenetrationFilterParams& params)
       grid_(params.cell_size, params.obstacle_threshold),
       evidence_(params.cell_size),  // the same cells as grid_: a frame's runs go into both
       aligner_(params.alignment),
-      free_space_(FreeSpaceCheckParams{params.edge_depth_step, params.free_space_margin, params.free_space_dip,
-                                       params.free_space_min_frames}) {}
+      free_space_(params) {}
 
 void PenetrationFilter::reset() {
   cache_.clear();
@@ -88,7 +88,7 @@ void PenetrationFilter::cacheFrame(const Scan& scan, const SensorInfo& sensor, c
   }
   grid_.add(frame.votes);
   if (evidence_now) addRescueEvidence(frame);
-  if (params_.free_space_check) frame.image.emplace(scan, sensor, correction_);
+  if (params_.free_space_check) frame.image.emplace(scan, sensor, correction_, labels);
   cache_.push_back(std::move(frame));
 }
 
@@ -229,10 +229,12 @@ void PenetrationFilter::markSeenThrough(const Scan& scan, const Eigen::Vector2d&
   const double baseline_sq = params_.rescue_min_baseline * params_.rescue_min_baseline;
   for (std::size_t i = 0; i < labels.size(); ++i) {
     if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid) || !free_space_.isCandidate(scan, i)) continue;
-    // A return that frames from elsewhere saw again is on a surface.
+    // A return the rescue's evidence (returns of frames from elsewhere)
+    // vouches for is on a surface.
     if (params_.rescue_persistent_points && evidenceAround(points_[i]) > 0) continue;
     int through = 0, hits = 0;
     for (const CachedFrame& frame : cache_) {
+      assert(frame.image);  // cached with the check on, as every frame is
       if ((frame.image->origin() - origin).squaredNorm() < baseline_sq) continue;  // no parallax
       const FreeSpaceCheck::Sighting s = free_space_.sighting(*frame.image, points_[i]);
       through += s == FreeSpaceCheck::Sighting::kThrough;

@@ -1,20 +1,13 @@
 #pragma once
 #include <cstddef>
-#include <span>
 
 #include <Eigen/Core>
 
+#include "scanfilter/penetration_filter_params.hpp"
 #include "scanfilter/range_image.hpp"
 #include "scanfilter/scan.hpp"
 
 namespace scanfilter {
-
-struct FreeSpaceCheckParams {
-  double depth_step = 0.15;  // m, a neighbour this much farther (or none) makes a return a candidate
-  double margin = 0.10;      // m, a cached beam ending this much beyond a point passed through it
-  double dip = 0.05;         // m, ... unless it ended this much short of its outer neighbours
-  int min_frames = 1;        // frames that must have passed through the point
-};
 
 // Beyond the paper: is a return in space that other viewpoints saw through?
 //
@@ -23,22 +16,27 @@ struct FreeSpaceCheckParams {
 // edge) or a displaced one lies in free space between surfaces, where
 // cached frames taken from elsewhere looked straight through. Only returns
 // beside a depth edge are candidates (a neighbour farther by depth_step or
-// no neighbour return): that is where mixed returns are.
+// no neighbour return; edge_depth_step): that is where mixed returns are.
+// Parameters: free_space_margin, free_space_dip, free_space_min_frames.
 //
 // A cached frame passed through point p when the two beams that bracket p's
 // bearing and the one outside each of them all returned farther than p by
-// `margin` (a beam of pose error between the frames must not make an edge
-// point look passed through), and neither bracketing beam is `dip` shorter
+// the margin (a beam of pose error between the frames must not make an edge
+// point look passed through), and neither bracketing beam is the dip shorter
 // than the outer ones: a thin leg standing partly in a beam (a triangulation
 // scanner's beam sweeps a whole step, a time-of-flight beam is wider than a
 // step) pulls the return short of the background without ending it at the
 // leg, and is not counted as passed through. A frame hit p when either
-// bracketing beam ended within `margin` of it.
+// bracketing beam ended within the margin of it.
 class FreeSpaceCheck {
  public:
   enum class Sighting { kNone, kThrough, kHit };
 
-  explicit FreeSpaceCheck(const FreeSpaceCheckParams& params) : params_(params) {}
+  explicit FreeSpaceCheck(const PenetrationFilterParams& params)
+      : depth_step_(params.edge_depth_step),
+        margin_(params.free_space_margin),
+        dip_(params.free_space_dip),
+        min_frames_(params.free_space_min_frames) {}
 
   // Whether return i of `scan` is beside a depth edge.
   bool isCandidate(const Scan& scan, std::size_t i) const;
@@ -47,10 +45,13 @@ class FreeSpaceCheck {
   Sighting sighting(const RangeImage& frame, const Eigen::Vector2d& p) const;
 
   // The verdict over the frames' sightings.
-  bool seenThrough(int through, int hits) const { return through >= params_.min_frames && through > hits; }
+  bool seenThrough(int through, int hits) const { return through >= min_frames_ && through > hits; }
 
  private:
-  FreeSpaceCheckParams params_;
+  double depth_step_;  // m
+  double margin_;      // m
+  double dip_;         // m
+  int min_frames_;
 };
 
 }  // namespace scanfilter

@@ -1,6 +1,7 @@
 #pragma once
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -10,10 +11,11 @@
 
 namespace scanfilter {
 
-// The ranges of one cached frame, looked up by world bearing: which of its
-// beams passed a given world point, and what they returned. Kept for the
-// free-space check (free_space_check.hpp); floats, as nothing here leaves the
-// filter.
+// The kept returns of one cached frame, looked up by world bearing: which of
+// its beams passed a given world point, and what they returned. Kept for the
+// free-space check (free_space_check.hpp). Returns the filter removed (a ghost
+// through a pane, a mixed return) are stored as no return: they do not show
+// where the beam's path was free. Floats: 40 frames of 3,600 beams each.
 class RangeImage {
  public:
   // The two beams whose bearings bracket a point's, each with its lateral
@@ -24,8 +26,10 @@ class RangeImage {
     double distance;
   };
 
-  // `scan` placed where the filter put it: its pose under `correction`.
-  RangeImage(const Scan& scan, const SensorInfo& sensor, const Eigen::Isometry2d& correction);
+  // `scan` placed where the filter put it: its pose under `correction`;
+  // `labels` say which returns the filter kept.
+  RangeImage(const Scan& scan, const SensorInfo& sensor, const Eigen::Isometry2d& correction,
+             std::span<const std::uint8_t> labels);
 
   const Eigen::Vector2d& origin() const { return origin_; }
   // Nothing when p lies outside the scan's field of view (a partial turn) or
