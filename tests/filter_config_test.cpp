@@ -90,6 +90,9 @@ TEST(FilterConfigErrors, NameFileLineAndKey) {
   EXPECT_EQ(errorOf("penetration_filter:\n  alignment:\n    max_fit_points: 10\n"),
             "f.yaml:3: penetration_filter.alignment.max_fit_points: must be 0 (every point) or at least min_matches "
             "(20): fewer points could never make a good fit");
+  EXPECT_EQ(errorOf("penetration_filter:\n  free_space_min_frames: 41\n"),
+            "f.yaml:2: penetration_filter.free_space_min_frames: expected an integer from 1 to max_cache_frames");
+  EXPECT_EQ(errorOf("penetration_filter:\n  max_cache_frames: 60\n  free_space_min_frames: 41\n"), "no error");
 }
 
 }  // namespace

@@ -131,7 +131,9 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.requireRange("edge_depth_step", p.edge_depth_step, 0.0, 10.0, "0 <= value <= 10 (m)");
   s.requireRange("free_space_margin", p.free_space_margin, 0.0, 10.0, "0 <= value <= 10 (m)");
   s.requireRange("free_space_dip", p.free_space_dip, 0.0, 10.0, "0 <= value <= 10 (m)");
-  s.requireRange("free_space_min_frames", p.free_space_min_frames, 1, 1e9, "an integer >= 1");
+  // More than the cache holds would switch the check off without a word.
+  s.requireRange("free_space_min_frames", p.free_space_min_frames, 1, static_cast<double>(p.max_cache_frames),
+                 "an integer from 1 to max_cache_frames");
   s.rejectUnknownKeys();
 }
 
