@@ -128,21 +128,6 @@ TEST(FreeSpaceCheck, ASightingIsThroughHitOrNothing) {
   EXPECT_EQ(sightingWith(kNaN, 3.0), S::kNone) << "no return: unknown, not free";
 }
 
-TEST(FreeSpaceCheck, CandidatesAreBesideADepthEdge) {
-  const FreeSpaceCheck check(PenetrationFilterParams{});
-  Scan scan = flatScan(2.0);
-  scan.ranges[20] = 2.1;  // within the depth step: the same surface
-  scan.ranges[30] = 3.0;
-  scan.ranges[40] = kNaN;
-  EXPECT_FALSE(check.isCandidate(scan, 19));
-  EXPECT_FALSE(check.isCandidate(scan, 21)) << "its neighbour is nearer, not farther";
-  EXPECT_TRUE(check.isCandidate(scan, 29));
-  EXPECT_TRUE(check.isCandidate(scan, 31));
-  EXPECT_TRUE(check.isCandidate(scan, 39)) << "beside a beam without a return";
-  scan.ranges[359] = 3.0;
-  EXPECT_TRUE(check.isCandidate(scan, 0)) << "a full turn wraps";
-}
-
 TEST(FreeSpaceCheck, AtLeastMinFramesAndMoreThanHit) {
   PenetrationFilterParams p;
   p.free_space_min_frames = 2;

@@ -3,17 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "scanfilter/scan_geometry.hpp"
-
 namespace scanfilter {
-
-bool FreeSpaceCheck::isCandidate(const Scan& scan, std::size_t i) const {
-  const std::size_t n = scan.size();
-  const bool full_turn = isFullTurn(scan);
-  const auto fartherAt = [&](std::size_t j) { return !scan.hasReturn(j) || scan.ranges[j] > scan.ranges[i] + depth_step_; };
-  if (i > 0 ? fartherAt(i - 1) : full_turn && fartherAt(n - 1)) return true;
-  return i + 1 < n ? fartherAt(i + 1) : full_turn && fartherAt(0);
-}
 
 FreeSpaceCheck::Sighting FreeSpaceCheck::sighting(const RangeImage& frame, const Eigen::Vector2d& p) const {
   const auto b = frame.bracket(p);

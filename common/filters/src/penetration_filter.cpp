@@ -227,8 +227,13 @@ void PenetrationFilter::rescuePersistentPoints(std::span<std::uint8_t> labels) {
 void PenetrationFilter::markSeenThrough(const Scan& scan, const Eigen::Vector2d& origin,
                                         std::span<std::uint8_t> labels) {
   const double baseline_sq = params_.rescue_min_baseline * params_.rescue_min_baseline;
+  // Candidates: returns with a neighbour farther by edge_depth_step, where
+  // mixed returns are. Any return counts as that neighbour, kept or not.
+  std::vector<bool> returns(scan.size());
+  for (std::size_t i = 0; i < returns.size(); ++i) returns[i] = scan.hasReturn(i);
+  const std::vector<bool> candidate = nearSideOfDepthEdge(scan, returns, 1, params_.edge_depth_step);
   for (std::size_t i = 0; i < labels.size(); ++i) {
-    if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid) || !free_space_.isCandidate(scan, i)) continue;
+    if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid) || !candidate[i]) continue;
     // A return the rescue's evidence (returns of frames from elsewhere)
     // vouches for is on a surface.
     if (params_.rescue_persistent_points && evidenceAround(points_[i]) > 0) continue;

@@ -1,11 +1,8 @@
 #pragma once
-#include <cstddef>
-
 #include <Eigen/Core>
 
 #include "scanfilter/penetration_filter_params.hpp"
 #include "scanfilter/range_image.hpp"
-#include "scanfilter/scan.hpp"
 
 namespace scanfilter {
 
@@ -14,10 +11,10 @@ namespace scanfilter {
 // A return on a real surface blocks the beams of every other viewpoint that
 // looks its way: they end at it. A mixed return (the footprint straddling an
 // edge) or a displaced one lies in free space between surfaces, where
-// cached frames taken from elsewhere looked straight through. Only returns
-// beside a depth edge are candidates (a neighbour farther by depth_step or
-// no neighbour return; edge_depth_step): that is where mixed returns are.
-// Parameters: free_space_margin, free_space_dip, free_space_min_frames.
+// cached frames taken from elsewhere looked straight through. The caller
+// tests only returns beside a depth edge (nearSideOfDepthEdge): that is where
+// mixed returns are. Parameters: free_space_margin, free_space_dip,
+// free_space_min_frames.
 //
 // A cached frame passed through point p when the two beams that bracket p's
 // bearing and the one outside each of them all returned farther than p by
@@ -33,13 +30,7 @@ class FreeSpaceCheck {
   enum class Sighting { kNone, kThrough, kHit };
 
   explicit FreeSpaceCheck(const PenetrationFilterParams& params)
-      : depth_step_(params.edge_depth_step),
-        margin_(params.free_space_margin),
-        dip_(params.free_space_dip),
-        min_frames_(params.free_space_min_frames) {}
-
-  // Whether return i of `scan` is beside a depth edge.
-  bool isCandidate(const Scan& scan, std::size_t i) const;
+      : margin_(params.free_space_margin), dip_(params.free_space_dip), min_frames_(params.free_space_min_frames) {}
 
   // What one cached frame's beams say about point p.
   Sighting sighting(const RangeImage& frame, const Eigen::Vector2d& p) const;
@@ -48,9 +39,8 @@ class FreeSpaceCheck {
   bool seenThrough(int through, int hits) const { return through >= min_frames_ && through > hits; }
 
  private:
-  double depth_step_;  // m
-  double margin_;      // m
-  double dip_;         // m
+  double margin_;  // m
+  double dip_;     // m
   int min_frames_;
 };
 
