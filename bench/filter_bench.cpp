@@ -23,6 +23,7 @@
 #include "scanfilter/off_surface_check.hpp"
 #include "scanfilter/penetration_filter.hpp"
 #include "scanfilter/point_code.hpp"
+#include "scanfilter/range_noise_estimate.hpp"
 #include "scanfilter/sim/scan_simulator.hpp"
 #include "scanfilter/sim/sensor_preset.hpp"
 
@@ -121,19 +122,40 @@ ExploredState& explored(Implementation impl, int area_m2, int beams) {
   return state;
 }
 
-// The paper's clustering (eq. 5-7): the off-surface check is off here, it is
-// the same O(N) pass in both implementations and has its own benchmark.
+// The paper's clustering (eq. 5-7): the off-surface check and the noise
+// estimate are off here; each is the same O(N) pass in both implementations
+// and has its own benchmark.
 void BM_JumpFilter(benchmark::State& state, Implementation impl) {
   const int beams = static_cast<int>(state.range(0));
   const sim::Scene hall = sim::findScene("hall");
   const Scan scan = simulatedFrame(hall, beams, 200);
   JumpFilterParams params;
   params.off_surface_check = false;
+  params.noise_estimate = false;
   auto filter = makeJumpFilter(params, impl);
   std::vector<std::uint8_t> labels(scan.size());
   for (auto _ : state) {
     filter->apply(scan, hall.sensor, labels);
     benchmark::DoNotOptimize(labels.data());
+  }
+  state.counters["beams"] = beams;
+}
+
+// The range-noise estimate alone: one scan's residuals added and the model
+// refitted, on the same frame.
+void BM_RangeNoiseEstimate(benchmark::State& state) {
+  const int beams = static_cast<int>(state.range(0));
+  const sim::Scene hall = sim::findScene("hall");
+  const Scan scan = simulatedFrame(hall, beams, 200);
+  BeamDirectionTable directions;
+  std::vector<Eigen::Vector2d> points;
+  sensorFramePoints(scan, hall.sensor, directions, points);
+  JumpFilterParams params;
+  params.d_max = hall.sensor.range_max;
+  RangeNoiseEstimate estimate(params);
+  for (auto _ : state) {
+    estimate.add(points, scan.ranges, true);
+    benchmark::DoNotOptimize(estimate.model());
   }
   state.counters["beams"] = beams;
 }
@@ -244,6 +266,7 @@ void BM_PenetrationStream(benchmark::State& state) {
 
 BENCHMARK_CAPTURE(BM_JumpFilter, reference, Implementation::kReference)->Arg(360)->Arg(1080)->Arg(3600)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_JumpFilter, fast, Implementation::kFast)->Arg(360)->Arg(1080)->Arg(3600)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_RangeNoiseEstimate)->Arg(360)->Arg(1080)->Arg(3600)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_OffSurfaceCheck)->Arg(360)->Arg(1080)->Arg(3600)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_PenetrationJudge, reference, Implementation::kReference)
     ->ArgsProduct({{360, 1080, 3600}, {100, 1000}})->Unit(benchmark::kMicrosecond);

@@ -53,6 +53,9 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(s.penetration.free_space_margin, d.penetration.free_space_margin);
   EXPECT_EQ(s.penetration.free_space_dip, d.penetration.free_space_dip);
   EXPECT_EQ(s.penetration.free_space_min_frames, d.penetration.free_space_min_frames);
+  EXPECT_EQ(s.jump.noise_estimate, d.jump.noise_estimate);
+  EXPECT_EQ(s.jump.noise_estimate_window_scans, d.jump.noise_estimate_window_scans);
+  EXPECT_EQ(s.jump.noise_estimate_min_samples, d.jump.noise_estimate_min_samples);
   EXPECT_EQ(s.penetration.alignment.max_fit_points, d.penetration.alignment.max_fit_points);
   EXPECT_FALSE(shipped.angular_accuracy_deg) << "auto: from the sensor";
 }
@@ -63,6 +66,7 @@ TEST(FilterConfig, PaperLiteralPresetLoads) {
   EXPECT_DOUBLE_EQ(paper.params.penetration.behind_margin, 0.1);
   EXPECT_FALSE(paper.params.penetration.rescue_persistent_points);
   EXPECT_FALSE(paper.params.penetration.free_space_check);
+  EXPECT_FALSE(paper.params.jump.noise_estimate) << "the paper has no noise model";
   EXPECT_FALSE(paper.params.jump.keep_foreground_clusters) << "eq. 7 as printed deletes every lone return";
   EXPECT_FALSE(paper.params.jump.keep_unresolved_returns);
 }
@@ -93,6 +97,8 @@ TEST(FilterConfigErrors, NameFileLineAndKey) {
   EXPECT_EQ(errorOf("penetration_filter:\n  free_space_min_frames: 41\n"),
             "f.yaml:2: penetration_filter.free_space_min_frames: expected an integer from 1 to max_cache_frames");
   EXPECT_EQ(errorOf("penetration_filter:\n  max_cache_frames: 60\n  free_space_min_frames: 41\n"), "no error");
+  EXPECT_EQ(errorOf("jump_filter:\n  noise_estimate_window_scans: 0\n"),
+            "f.yaml:2: jump_filter.noise_estimate_window_scans: expected 1-1e6 (scans)");
 }
 
 }  // namespace

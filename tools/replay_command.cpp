@@ -1,4 +1,5 @@
 #include <chrono>
+#include <iomanip>
 #include <iostream>
 #include <optional>
 
@@ -45,6 +46,13 @@ int runReplay(const ReplayOptions& options) {
   if (score.frames() > 0)
     std::cout << "filter time: " << 1e3 * filter_time.count() / static_cast<double>(score.frames())
               << " ms per scan\n";
+  if (config.params.jump_enabled) {
+    const RangeNoiseModel noise = filter.jump().noiseModel();
+    std::cout << "step 1 range noise: sigma(d) = " << std::setprecision(3) << 1e3 * noise.base << " mm + "
+              << 1e3 * noise.quadratic << " mm/m^2 * d^2"
+              << (config.params.jump.noise_estimate ? " (each term the larger of measured and configured)" : "")
+              << "\n" << std::setprecision(6);
+  }
   if (config.params.penetration_enabled && config.params.penetration.alignment.enabled)
     std::cout << "step 2 frames not judged (did not fit the cache): " << filter.penetration().unalignedFrames()
               << " of " << score.frames() << "\n";

@@ -27,6 +27,9 @@ void readJump(YamlSection& s, FilterConfig& config) {
   s.read("off_surface_sigmas", p.off_surface_sigmas);
   s.read("noise_sigma_base", p.noise_sigma_base);
   s.read("noise_sigma_quadratic", p.noise_sigma_quadratic);
+  s.read("noise_estimate", p.noise_estimate);
+  s.read("noise_estimate_window_scans", p.noise_estimate_window_scans);
+  s.read("noise_estimate_min_samples", p.noise_estimate_min_samples);
   s.read("radius_noise_sigmas", p.radius_noise_sigmas);
   s.read("straight_runs", p.straight_runs);
   s.read("straight_run_max_incidence_deg", p.straight_run_max_incidence_deg);
@@ -42,6 +45,8 @@ void readJump(YamlSection& s, FilterConfig& config) {
   s.requireRange("off_surface_sigmas", p.off_surface_sigmas, 0.0, 1e9, "a value >= 0");
   s.requireRange("noise_sigma_base", p.noise_sigma_base, 0.0, 1e9, "a value >= 0 (m)");
   s.requireRange("noise_sigma_quadratic", p.noise_sigma_quadratic, 0.0, 1e9, "a value >= 0 (m per m²)");
+  s.requireRange("noise_estimate_window_scans", p.noise_estimate_window_scans, 1.0, 1e6, "1-1e6 (scans)");
+  s.requireRange("noise_estimate_min_samples", p.noise_estimate_min_samples, 1.0, 1e9, "a value >= 1 (residuals)");
   s.requireRange("radius_noise_sigmas", p.radius_noise_sigmas, 0.0, 100.0, "0-100");
   s.requireRange("straight_run_max_incidence_deg", p.straight_run_max_incidence_deg, 0.0, 89.9, "0-89.9 (degrees)");
   s.requireRange("straight_run_min_points", p.straight_run_min_points, 3, 1e6, "an integer >= 3");

@@ -13,6 +13,7 @@ void JumpFilter::apply(const Scan& scan, const SensorInfo& sensor, std::span<std
   const std::size_t n = scan.size();
   sensorFramePoints(scan, sensor, directions_, points_);
   full_turn_ = isFullTurn(scan);
+  if (params_.noise_estimate) followNoiseEstimate(scan);
   free_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     free_[i] = scan.hasReturn(i) ? 1 : 0;
@@ -30,6 +31,18 @@ void JumpFilter::apply(const Scan& scan, const SensorInfo& sensor, std::span<std
   }
   judgeClusters(scan, clusters, labels);
   off_surface_.apply(points_, scan.ranges, full_turn_, foreground_, labels);
+}
+
+void JumpFilter::followNoiseEstimate(const Scan& scan) {
+  noise_.add(points_, scan.ranges, full_turn_);
+  const RangeNoiseModel model = noise_.model();
+  if (model == noiseModel()) return;
+  // The rule and both checks hold their own copy of the parameters.
+  params_.noise_sigma_base = model.base;
+  params_.noise_sigma_quadratic = model.quadratic;
+  rule_ = JumpClusterRule(params_);
+  off_surface_ = OffSurfaceCheck(params_);
+  runs_ = StraightRunJoin(params_);
 }
 
 void JumpFilter::judgeClusters(const Scan& scan, std::uint32_t cluster_count, std::span<std::uint8_t> labels) {

@@ -9,6 +9,7 @@
 #include "scanfilter/implementation.hpp"
 #include "scanfilter/jump_cluster_rule.hpp"
 #include "scanfilter/off_surface_check.hpp"
+#include "scanfilter/range_noise_estimate.hpp"
 #include "scanfilter/straight_run_join.hpp"
 #include "scanfilter/scan.hpp"
 #include "scanfilter/scan_geometry.hpp"
@@ -20,10 +21,15 @@ namespace scanfilter {
 // Writes one code per beam: no return, jump, or valid.
 class JumpFilter {
  public:
-  explicit JumpFilter(const JumpFilterParams& params) : rule_(params), off_surface_(params), runs_(params) {}
+  explicit JumpFilter(const JumpFilterParams& params)
+      : params_(params), rule_(params), off_surface_(params), runs_(params), noise_(params) {}
   virtual ~JumpFilter() = default;
 
   void apply(const Scan& scan, const SensorInfo& sensor, std::span<std::uint8_t> labels);
+
+  // The range-noise model the last scan was judged with (noise_estimate: measured).
+  const RangeNoiseEstimate& noiseEstimate() const { return noise_; }
+  RangeNoiseModel noiseModel() const { return {params_.noise_sigma_base, params_.noise_sigma_quadratic}; }
 
  protected:
   // Called once per scan after free_ is set, before the first cluster grows.
@@ -35,9 +41,11 @@ class JumpFilter {
     return (points_[j] - points_[m]).squaredNorm() < radius_sq;
   }
 
+  JumpFilterParams params_;  // noise_sigma_* follow the estimate
   JumpClusterRule rule_;
   OffSurfaceCheck off_surface_;
   StraightRunJoin runs_;
+  RangeNoiseEstimate noise_;
   BeamDirectionTable directions_;
   std::vector<Eigen::Vector2d> points_;  // sensor frame
   std::vector<std::uint8_t> free_;       // 1 while a point belongs to no cluster
@@ -45,6 +53,8 @@ class JumpFilter {
   bool full_turn_ = false;
 
  private:
+  // Adds the scan to the noise estimate and judges with the model it gives.
+  void followNoiseEstimate(const Scan& scan);
   // Eq. 6-7 on every cluster, after the straight runs joined those they pass through.
   void judgeClusters(const Scan& scan, std::uint32_t cluster_count, std::span<std::uint8_t> labels);
 

@@ -28,6 +28,12 @@ struct JumpFilterParams {
   double off_surface_sigmas = 4.0;        // offsets within this many σ(range) are noise
   double noise_sigma_base = 0.003;        // m, the sensor's range noise σ at zero range
   double noise_sigma_quadratic = 0.001;   // m per m²: σ(d) = base + quadratic·d² (triangulation)
+  // Beyond the paper: σ(d) measured on the scans (range_noise_estimate.hpp)
+  // replaces the two values above once enough returns lie on surfaces; they
+  // hold until then. false = the configured model always.
+  bool noise_estimate = true;
+  double noise_estimate_window_scans = 200.0;  // scans: an older scan's weight decays by 1 - 1/this a scan
+  double noise_estimate_min_samples = 100.0;   // residuals (decayed) a 1 m range band needs to count
   // Beyond the paper: eq. 5's radius widened by this many σ(range) (the noise
   // model above), so that range noise alone does not split a surface (at
   // 0.1° steps σ exceeds eq. 5's radius from about 1 m). 0 = the paper.

@@ -25,6 +25,7 @@ class TwoStepFilter final : public ScanFilter {
 
   void apply(const Scan& scan, const SensorInfo& sensor, std::span<std::uint8_t> labels) override;
   const PenetrationFilter& penetration() const { return *penetration_; }
+  const JumpFilter& jump() const { return *jump_; }
   const TwoStepFilterParams& params() const { return params_; }
 
  private:
