@@ -51,11 +51,14 @@ std::vector<Scan> noisyScans(double base, double quadratic, int count, std::uint
   return scans;
 }
 
+// Smoothed over many scans, so that the figures below are tight.
 JumpFilterParams params(double base, double quadratic) {
   JumpFilterParams p;
   p.noise_sigma_base = base;
   p.noise_sigma_quadratic = quadratic;
   p.d_max = sensor().range_max;
+  p.noise_estimate_window_scans = 200;
+  p.noise_estimate_min_samples = 100;
   return p;
 }
 
@@ -134,6 +137,19 @@ TEST(RangeNoiseEstimate, KeepsTheWallsOfANoisierSensorThanConfigured) {
   const long fixed = wall_points_deleted(false), measured = wall_points_deleted(true);
   EXPECT_GT(fixed, 100) << "the configured model loses walls here";
   EXPECT_LT(measured, fixed / 4);
+}
+
+TEST(RangeNoiseEstimate, AsShippedEachScanIsMeasuredAlone) {
+  // The defaults keep no history: the model after a scan depends on that
+  // scan only, so a restarted jump_filter labels exactly as before.
+  JumpFilterParams shipped;
+  shipped.d_max = sensor().range_max;
+  const std::vector<Scan> quiet = noisyScans(0.004, 0.0, 30), noisy = noisyScans(0.04, 0.0, 1, 11);
+  std::vector<Scan> after_quiet = quiet;
+  after_quiet.push_back(noisy.front());
+  const RangeNoiseModel alone = estimateOf(noisy, shipped).model();
+  EXPECT_EQ(estimateOf(after_quiet, shipped).model(), alone);
+  EXPECT_NEAR(alone.base, 0.04, 0.012) << "one 720-beam scan measures it";
 }
 
 TEST(RangeNoiseEstimate, BothImplementationsJudgeWithTheSameEstimate) {

@@ -10,6 +10,8 @@
 #include "scanfilter/filter_config.hpp"
 #include "scanfilter/jump_filter.hpp"
 
+#include "noise_metrics.hpp"
+
 using namespace scanfilter;
 using namespace scanfilter::dds_io;
 
@@ -22,9 +24,13 @@ int main(int argc, char** argv) {
     PerSensorFilter<JumpFilter> filters(
         config, [](const TwoStepFilterParams& p) { return makeJumpFilter(p.jump, Implementation::kFast); });
     const bool enabled = config.params.jump_enabled;
+    jump_service::NoiseMetrics noise(runtime.metrics());
     FilterStage stage(runtime, "jump_filter", kPosedScanTopic, kJumpFilteredTopic,
                       [&](const Scan& scan, const SensorInfo& sensor, std::span<std::uint8_t> labels) {
-                        if (enabled) filters.forSensor(sensor).apply(scan, sensor, labels);
+                        if (!enabled) return;
+                        JumpFilter& filter = filters.forSensor(sensor);
+                        filter.apply(scan, sensor, labels);
+                        noise.judgedWith(filter.noiseModel());
                       });
     runtime.runUntilStopped();
     spdlog::info("stopping after {} scans", stage.processed());

@@ -156,6 +156,15 @@ metrics)
     grep -q "^scanfilter_processing_seconds_bucket{service=\"$name\",le=\"1e-05\"}" <<<"$page" ||
       fail "$name has no processing histogram"
   done
+  # The range-noise model step 1 judged the last scan with (accuracy.md, 18)
+  # is the one the offline replay of the same scans ends with.
+  offline=$("$SF" replay "$WORK/in.scanlog.jsonl" --config "$SRC/config/filter.yaml")
+  offline_base=$(sed -n 's/^step 1 range noise: sigma(d) = \([0-9.]*\) mm .*/\1/p' <<<"$offline")
+  page=$(scrape 19472)
+  live_base=$(sed -n 's/^scanfilter_range_noise_base_metres{service="jump_filter"} \(.*\)/\1/p' <<<"$page")
+  live_mm=$(awk -v b="${live_base:-nan}" 'BEGIN { printf "%.3f", 1000 * b }')
+  [ -n "$offline_base" ] && [ "$live_mm" = "$offline_base" ] ||
+    fail "jump_filter's range noise base ${live_base:-missing} m, the offline replay's ${offline_base:-missing} mm"
   # The removed-points counters equal the labels that came out (step 2's
   # rescue gives some jump points back, and counts them; its free-space
   # check removes some, counted as removed by penetration_filter).

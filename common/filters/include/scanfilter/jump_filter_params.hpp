@@ -32,8 +32,9 @@ struct JumpFilterParams {
   // replaces the two values above once enough returns lie on surfaces; they
   // hold until then. false = the configured model always.
   bool noise_estimate = true;
-  double noise_estimate_window_scans = 200.0;  // scans: an older scan's weight decays by 1 - 1/this a scan
-  double noise_estimate_min_samples = 100.0;   // residuals (decayed) a 1 m range band needs to count
+  // 1: each scan alone (step 1 keeps no state: a restarted service labels as before).
+  double noise_estimate_window_scans = 1.0;  // scans: an older scan's weight decays by 1 - 1/this a scan
+  double noise_estimate_min_samples = 20.0;  // residuals (decayed) a 1 m range band needs to count
   // Beyond the paper: eq. 5's radius widened by this many σ(range) (the noise
   // model above), so that range noise alone does not split a surface (at
   // 0.1° steps σ exceeds eq. 5's radius from about 1 m). 0 = the paper.
