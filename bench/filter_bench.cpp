@@ -141,20 +141,29 @@ void BM_JumpFilter(benchmark::State& state, Implementation impl) {
   state.counters["beams"] = beams;
 }
 
+// One simulated hall frame (frame 200) and its points in the sensor frame:
+// what the per-scan passes of step 1 below run on.
+struct HallFrame {
+  sim::Scene hall = sim::findScene("hall");
+  Scan scan;
+  std::vector<Eigen::Vector2d> points;
+
+  explicit HallFrame(int beams) : scan(simulatedFrame(hall, beams, 200)) {
+    BeamDirectionTable directions;
+    sensorFramePoints(scan, hall.sensor, directions, points);
+  }
+};
+
 // The range-noise estimate alone: one scan's residuals added and the model
 // refitted, on the same frame.
 void BM_RangeNoiseEstimate(benchmark::State& state) {
   const int beams = static_cast<int>(state.range(0));
-  const sim::Scene hall = sim::findScene("hall");
-  const Scan scan = simulatedFrame(hall, beams, 200);
-  BeamDirectionTable directions;
-  std::vector<Eigen::Vector2d> points;
-  sensorFramePoints(scan, hall.sensor, directions, points);
+  const HallFrame frame(beams);
   JumpFilterParams params;
-  params.d_max = hall.sensor.range_max;
+  params.d_max = frame.hall.sensor.range_max;
   RangeNoiseEstimate estimate(params);
   for (auto _ : state) {
-    estimate.add(points, scan.ranges, true);
+    estimate.add(frame.points, frame.scan.ranges, true);
     benchmark::DoNotOptimize(estimate.model());
   }
   state.counters["beams"] = beams;
@@ -163,17 +172,13 @@ void BM_RangeNoiseEstimate(benchmark::State& state) {
 // The off-surface check alone, on the same frame (every point valid to start).
 void BM_OffSurfaceCheck(benchmark::State& state) {
   const int beams = static_cast<int>(state.range(0));
-  const sim::Scene hall = sim::findScene("hall");
-  const Scan scan = simulatedFrame(hall, beams, 200);
-  BeamDirectionTable directions;
-  std::vector<Eigen::Vector2d> points;
-  sensorFramePoints(scan, hall.sensor, directions, points);
+  const HallFrame frame(beams);
   OffSurfaceCheck check{JumpFilterParams{}};
-  std::vector<std::uint8_t> labels(scan.size());
-  const std::vector<std::uint8_t> none_spared(scan.size(), 0);
+  std::vector<std::uint8_t> labels(frame.scan.size());
+  const std::vector<std::uint8_t> none_spared(frame.scan.size(), 0);
   for (auto _ : state) {
     std::fill(labels.begin(), labels.end(), static_cast<std::uint8_t>(PointCode::kValid));
-    check.apply(points, scan.ranges, isFullTurn(scan), none_spared, labels);
+    check.apply(frame.points, frame.scan.ranges, isFullTurn(frame.scan), none_spared, labels);
     benchmark::DoNotOptimize(labels.data());
   }
   state.counters["beams"] = beams;

@@ -48,10 +48,14 @@ int runReplay(const ReplayOptions& options) {
               << " ms per scan\n";
   if (config.params.jump_enabled) {
     const RangeNoiseModel noise = filter.jump().noiseModel();
-    std::cout << "step 1 range noise: sigma(d) = " << std::setprecision(3) << 1e3 * noise.base << " mm + "
-              << 1e3 * noise.quadratic << " mm/m^2 * d^2"
+    const std::ios_base::fmtflags flags = std::cout.flags();
+    const std::streamsize precision = std::cout.precision();
+    std::cout << "step 1 range noise: sigma(d) = " << std::fixed << std::setprecision(3) << 1e3 * noise.base
+              << " mm + " << 1e3 * noise.quadratic << " mm/m^2 * d^2"
               << (config.params.jump.noise_estimate ? " (each term the larger of measured and configured)" : "")
-              << "\n" << std::setprecision(6);
+              << "\n";
+    std::cout.flags(flags);
+    std::cout.precision(precision);
   }
   if (config.params.penetration_enabled && config.params.penetration.alignment.enabled)
     std::cout << "step 2 frames not judged (did not fit the cache): " << filter.penetration().unalignedFrames()

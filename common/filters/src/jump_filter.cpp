@@ -38,11 +38,10 @@ void JumpFilter::followNoiseEstimate(const Scan& scan) {
   const RangeNoiseModel model = noise_.model();
   if (model == noiseModel()) return;
   // The rule and both checks hold their own copy of the parameters.
-  params_.noise_sigma_base = model.base;
-  params_.noise_sigma_quadratic = model.quadratic;
-  rule_ = JumpClusterRule(params_);
-  off_surface_ = OffSurfaceCheck(params_);
-  runs_ = StraightRunJoin(params_);
+  setNoiseModel(params_, model);
+  rule_.useNoiseModel(model);
+  off_surface_.useNoiseModel(model);
+  runs_.useNoiseModel(model);
 }
 
 void JumpFilter::judgeClusters(const Scan& scan, std::uint32_t cluster_count, std::span<std::uint8_t> labels) {

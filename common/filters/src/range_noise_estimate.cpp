@@ -23,7 +23,7 @@ double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() 
 }  // namespace
 
 RangeNoiseEstimate::RangeNoiseEstimate(const JumpFilterParams& params)
-    : configured_{params.noise_sigma_base, params.noise_sigma_quadratic},
+    : configured_(noiseModelOf(params)),
       model_(configured_),
       keep_(1.0 - 1.0 / params.noise_estimate_window_scans),
       min_samples_(params.noise_estimate_min_samples),

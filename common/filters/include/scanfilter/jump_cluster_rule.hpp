@@ -20,6 +20,7 @@ enum class ClusterVerdict : std::uint8_t {
 class JumpClusterRule {
  public:
   explicit JumpClusterRule(const JumpFilterParams& params);
+  void useNoiseModel(const RangeNoiseModel& model) { setNoiseModel(params_, model); }
 
   // d_th of equation (5) for a point at `range` (proportional to the range,
   // so the ratio is computed once), widened by `radius_noise_sigmas` · σ(range)

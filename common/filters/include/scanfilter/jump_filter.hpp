@@ -28,8 +28,7 @@ class JumpFilter {
   void apply(const Scan& scan, const SensorInfo& sensor, std::span<std::uint8_t> labels);
 
   // The range-noise model the last scan was judged with (noise_estimate: measured).
-  const RangeNoiseEstimate& noiseEstimate() const { return noise_; }
-  RangeNoiseModel noiseModel() const { return {params_.noise_sigma_base, params_.noise_sigma_quadratic}; }
+  RangeNoiseModel noiseModel() const { return noiseModelOf(params_); }
 
  protected:
   // Called once per scan after free_ is set, before the first cluster grows.

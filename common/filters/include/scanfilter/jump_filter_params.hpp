@@ -28,9 +28,9 @@ struct JumpFilterParams {
   double off_surface_sigmas = 4.0;        // offsets within this many σ(range) are noise
   double noise_sigma_base = 0.003;        // m, the sensor's range noise σ at zero range
   double noise_sigma_quadratic = 0.001;   // m per m²: σ(d) = base + quadratic·d² (triangulation)
-  // Beyond the paper: σ(d) measured on the scans (range_noise_estimate.hpp)
-  // replaces the two values above once enough returns lie on surfaces; they
-  // hold until then. false = the configured model always.
+  // Beyond the paper: σ(d) measured on the scans (range_noise_estimate.hpp);
+  // each measured term replaces the one above when larger. false = the
+  // configured model always.
   bool noise_estimate = true;
   // 1: each scan alone (step 1 keeps no state: a restarted service labels as before).
   double noise_estimate_window_scans = 1.0;  // scans: an older scan's weight decays by 1 - 1/this a scan
@@ -66,6 +66,23 @@ struct JumpFilterParams {
   // door frames are such returns.
   bool keep_unresolved_returns = true;
 };
+
+// σ(d) = base + quadratic·d², the range-noise model of step 1: the two
+// noise_sigma_* parameters, or what the estimate replaced them with.
+struct RangeNoiseModel {
+  double base = 0.0;       // m
+  double quadratic = 0.0;  // m per m²
+  bool operator==(const RangeNoiseModel&) const = default;
+};
+
+inline RangeNoiseModel noiseModelOf(const JumpFilterParams& p) {
+  return {p.noise_sigma_base, p.noise_sigma_quadratic};
+}
+
+inline void setNoiseModel(JumpFilterParams& p, const RangeNoiseModel& m) {
+  p.noise_sigma_base = m.base;
+  p.noise_sigma_quadratic = m.quadratic;
+}
 
 // The sensor's range noise σ(range) of the noise model above.
 inline double rangeNoiseSigma(const JumpFilterParams& p, double range) {

@@ -24,6 +24,7 @@ namespace scanfilter {
 class OffSurfaceCheck {
  public:
   explicit OffSurfaceCheck(const JumpFilterParams& params) : params_(params) {}
+  void useNoiseModel(const RangeNoiseModel& model) { setNoiseModel(params_, model); }
 
   // Labels kJump every kValid point off both neighbour lines (nothing when
   // off_surface_check is false), except those `spared` (1: a cluster kept

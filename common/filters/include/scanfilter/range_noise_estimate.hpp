@@ -11,13 +11,6 @@
 
 namespace scanfilter {
 
-// σ(d) = base + quadratic·d², the range-noise model of step 1.
-struct RangeNoiseModel {
-  double base = 0.0;       // m
-  double quadratic = 0.0;  // m per m²
-  bool operator==(const RangeNoiseModel&) const = default;
-};
-
 // Beyond the paper: the sensor's range noise, measured on its own scans.
 //
 // Step 1's tolerances (the widened neighbour radius, the off-surface and
@@ -61,7 +54,6 @@ class RangeNoiseEstimate {
   // The range noise of one band (its median residual / sqrt(1.5) · 1.4826), or 0 with too few samples.
   double bandSigma(std::size_t band) const;
   std::size_t bandCount() const { return bands_.size(); }
-  double bandWeight(std::size_t band) const { return band_weight_[band]; }
 
   static constexpr double kBandWidth = 1.0;  // m
   // |residual| histogram: bins from kSmallest upwards, kBinsPerOctave a factor of 2.

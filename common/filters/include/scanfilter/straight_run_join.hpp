@@ -18,6 +18,7 @@ namespace scanfilter {
 class StraightRunJoin {
  public:
   explicit StraightRunJoin(const JumpFilterParams& params);
+  void useNoiseModel(const RangeNoiseModel& model) { setNoiseModel(params_, model); }
 
   // `cluster_of[i]`: the cluster of beam i (kNoCluster without a return),
   // clusters numbered 0..cluster_count-1. Returns each cluster's
