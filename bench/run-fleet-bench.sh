@@ -14,8 +14,8 @@
 # penetration_filter from its histogram (linear within a bucket).
 #
 #   bench/run-fleet-bench.sh [--robots N] [--seconds S] [--rate HZ] [--beams B] [--no-labels]
-#                            [--sample-every S] [--out DIR]
-#   defaults: 4 robots, 60 s, 40 Hz, 360 beams
+#                            [--sample-every S] [--out DIR] [--profile FILE]
+#   defaults: 4 robots, 60 s, 40 Hz, 360 beams, deploy/fastdds-loopback.xml
 #
 # --sample-every S writes DIR/samples.tsv every S seconds (per process RSS and
 # CPU, the window's end-to-end p99), which scripts/soak.sh summarises.
@@ -28,6 +28,7 @@ if [ -z "${SCANFILTER_IN_NETNS:-}" ] && [ "$(id -u)" = 0 ] && unshare -n true 2>
   exec unshare -n env SCANFILTER_IN_NETNS=1 bash -c 'ip link set lo up && exec bash "$0" "$@"' "$0" "$@"
 fi
 ROBOTS=4 SECONDS_RUN=60 RATE=40 BEAMS=360 LABELS=1 SAMPLE_EVERY=0 OUT=""
+PROFILES="$ROOT/deploy/fastdds-loopback.xml"
 while [ $# -gt 0 ]; do
   case "$1" in
     --robots) ROBOTS="$2"; shift 2 ;;
@@ -37,6 +38,7 @@ while [ $# -gt 0 ]; do
     --no-labels) LABELS=0; shift ;;
     --sample-every) SAMPLE_EVERY="$2"; shift 2 ;;
     --out) OUT="$2"; shift 2 ;;
+    --profile) PROFILES="$(realpath "$2")"; shift 2 ;;
     -h|--help) sed -n 2,24p "$0"; exit 0 ;;
     *) echo "run-fleet-bench.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
   esac
@@ -62,7 +64,7 @@ fail() {
   exit 1
 }
 SF="$BUILD/tools/scanfilter"
-PROFILES="$ROOT/deploy/fastdds-loopback.xml"
+[ -f "$PROFILES" ] || { echo "run-fleet-bench.sh: no Fast DDS profile at $PROFILES" >&2; exit 2; }
 SERVICES=(scan_ingest jump_filter penetration_filter map_publisher)
 # Metrics ports: 20<robot><k>, k = 1 ingest, 2 jump, 3 penetration, 4 map.
 port() { echo $((20000 + 10 * $1 + $2)); }

@@ -141,14 +141,17 @@ TEST(FreeSpaceCheck, AtLeastMinFramesAndMoreThanHit) {
 // Step 2 on a room with a leg 1 m ahead, the sensor moving sideways 5 cm a
 // frame (10 Hz), so that earlier frames see behind the leg, every return
 // valid (step 1 found nothing): in the last frame one beam beside the leg is
-// made a mixed return, halfway between the leg and the wall behind. Returns the labels of the last frame for both
-// implementations, and the beams of the mixed return and of the leg.
+// made a mixed return, halfway between the leg and the wall behind. In the
+// first `earlier_near` frames (all 0.25 m+ from the last) one beam ends where
+// that mixed return will lie, as another viewpoint's mixed return of the leg
+// may. Returns the labels of the last frame for both implementations, and
+// the beams of the mixed return and of the leg.
 struct LastFrame {
   std::vector<std::uint8_t> reference, fast;
   std::size_t mixed = 0, leg = 0;
 };
 
-LastFrame filterWithAMixedReturn(const PenetrationFilterParams& p) {
+LastFrame filterWithAMixedReturn(const PenetrationFilterParams& p, int earlier_near = 0) {
   const SensorInfo sensor = test::simpleSensor();
   const World world = World{}
                           .wall({3, -3}, {3, 3})
@@ -160,15 +163,27 @@ LastFrame filterWithAMixedReturn(const PenetrationFilterParams& p) {
   auto fast = makePenetrationFilter(p, Implementation::kFast);
   LastFrame out;
   constexpr int kFrames = 16;
+  const auto poseOf = [](int k) { return Pose2{0.0, 0.05 * k, 0.0}; };
+  // The mixed return of the last frame: the first beam past the leg's edge
+  // that reaches the wall, pulled halfway to the leg.
+  const auto mixReturn = [&](Scan& scan) {
+    out.mixed = test::beamTowards(scan, sensor, std::atan2(-poseOf(kFrames - 1).y, 1.0));
+    while (scan.ranges[out.mixed] < 2.0) ++out.mixed;
+    scan.ranges[out.mixed] = 0.5 * (scan.ranges[out.mixed - 1] + scan.ranges[out.mixed]);
+  };
+  Scan last = castScan(world, poseOf(kFrames - 1), sensor, 360, 0.1 * (kFrames - 1));
+  mixReturn(last);
+  const double bearing = beamWorldAngle(last, sensor, out.mixed);
+  const Eigen::Vector2d mixed_at =
+      Eigen::Vector2d(0.0, poseOf(kFrames - 1).y) + last.ranges[out.mixed] * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
   for (int k = 0; k < kFrames; ++k) {
-    const Pose2 pose{0.0, 0.05 * k, 0.0};
+    const Pose2 pose = poseOf(k);
     Scan scan = castScan(world, pose, sensor, 360, 0.1 * k);
     out.leg = test::beamTowards(scan, sensor, std::atan2(-pose.y, 1.0));
-    if (k == kFrames - 1) {
-      // The first beam past the leg's edge that reaches the wall.
-      out.mixed = out.leg;
-      while (scan.ranges[out.mixed] < 2.0) ++out.mixed;
-      scan.ranges[out.mixed] = 0.5 * (scan.ranges[out.mixed - 1] + scan.ranges[out.mixed]);
+    if (k == kFrames - 1) mixReturn(scan);
+    if (k < earlier_near) {
+      const Eigen::Vector2d to = mixed_at - Eigen::Vector2d(pose.x, pose.y);
+      scan.ranges[test::beamTowards(scan, sensor, std::atan2(to.y(), to.x()))] = to.norm();
     }
     std::vector<std::uint8_t> labels(scan.size());
     for (std::size_t i = 0; i < scan.size(); ++i)
@@ -192,10 +207,32 @@ TEST(FreeSpaceCheck, StepTwoRemovesAMixedReturnAndKeepsTheLeg) {
   off.free_space_check = false;
   EXPECT_EQ(filterWithAMixedReturn(off).fast[on.mixed], kValid) << "the paper's step 2 keeps it";
 
+  PenetrationFilterParams veto_one;
+  veto_one.free_space_veto_count = 1;
+  EXPECT_EQ(filterWithAMixedReturn(veto_one).fast[on.mixed], kJump) << "no return from elsewhere near it";
+
   PenetrationFilterParams no_parallax;
   no_parallax.rescue_min_baseline = 2.0;  // no cached frame is that far
   EXPECT_EQ(filterWithAMixedReturn(no_parallax).fast[on.mixed], kValid)
       << "frames from (nearly) the same place say nothing";
+}
+
+// Returns of other frames near the point vouch for a surface there, but one
+// alone (another viewpoint's mixed return of the same leg) is not enough at
+// the default free_space_veto_count of 2 (docs/accuracy.md, Beyond the paper 19).
+TEST(FreeSpaceCheck, OneReturnFromElsewhereNearItDoesNotVetoTheCheck) {
+  const PenetrationFilterParams defaults;
+  ASSERT_EQ(defaults.free_space_veto_count, 2);
+  const LastFrame one = filterWithAMixedReturn(defaults, 1);
+  EXPECT_EQ(one.reference, one.fast);
+  EXPECT_EQ(one.fast[one.mixed], kJump) << "one earlier return near it: still checked, still seen through";
+  const LastFrame two = filterWithAMixedReturn(defaults, 2);
+  EXPECT_EQ(two.reference, two.fast);
+  EXPECT_EQ(two.fast[two.mixed], kValid) << "two earlier returns near it vouch for a surface";
+
+  PenetrationFilterParams veto_one;
+  veto_one.free_space_veto_count = 1;
+  EXPECT_EQ(filterWithAMixedReturn(veto_one, 1).fast[one.mixed], kValid) << "with 1, any return from elsewhere vetoes";
 }
 
 }  // namespace

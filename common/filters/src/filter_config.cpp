@@ -114,6 +114,7 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.read("free_space_margin", p.free_space_margin);
   s.read("free_space_dip", p.free_space_dip);
   s.read("free_space_min_frames", p.free_space_min_frames);
+  s.read("free_space_veto_count", p.free_space_veto_count);
   s.take("alignment");
   readAlignment(s, p.alignment);
   s.requireRange("cell_size", p.cell_size, 1e-3, 10.0, "0.001 <= value <= 10 (m)");
@@ -139,6 +140,7 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   // More than the cache holds would switch the check off without a word.
   s.requireRange("free_space_min_frames", p.free_space_min_frames, 1, static_cast<double>(p.max_cache_frames),
                  "an integer from 1 to max_cache_frames");
+  s.requireRange("free_space_veto_count", p.free_space_veto_count, 1, 1e9, "an integer >= 1");
   s.rejectUnknownKeys();
 }
 

@@ -236,7 +236,7 @@ void PenetrationFilter::markSeenThrough(const Scan& scan, const Eigen::Vector2d&
     if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid) || !candidate[i]) continue;
     // A return the rescue's evidence (returns of frames from elsewhere)
     // vouches for is on a surface.
-    if (params_.rescue_persistent_points && evidenceAround(points_[i]) > 0) continue;
+    if (params_.rescue_persistent_points && evidenceAround(points_[i]) >= params_.free_space_veto_count) continue;
     int through = 0, hits = 0;
     for (const CachedFrame& frame : cache_) {
       assert(frame.image);  // cached with the check on, as every frame is

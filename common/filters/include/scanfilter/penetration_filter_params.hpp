@@ -73,15 +73,20 @@ struct PenetrationFilterParams {
   // edge becomes a jump point when cached frames taken from at least
   // rescue_min_baseline away looked through where it lies (the four beams
   // around its bearing went on beyond it by free_space_margin) more often
-  // than they ended at it, and no such frame put a return within
-  // rescue_radius of it: a mixed or displaced return in free space, which
-  // eq. 5 joined to a surface's cluster or which stands in front of both
-  // sides like a thin leg. The depth edge is edge_depth_step. false = the
-  // paper.
+  // than they ended at it, and such frames put fewer than
+  // free_space_veto_count returns within rescue_radius of it: a mixed or
+  // displaced return in free space, which eq. 5 joined to a surface's
+  // cluster or which stands in front of both sides like a thin leg. The
+  // depth edge is edge_depth_step. false = the paper.
   bool free_space_check = true;
   double free_space_margin = 0.10;  // m
   double free_space_dip = 0.05;     // m, a bracketing beam this much short of the outer ones does not count
   int free_space_min_frames = 1;
+  // Returns from elsewhere that vouch for a surface there. One was enough
+  // until it was measured: the mixed returns of a thin leg, seen from other
+  // places, scatter behind it, and one of them near another was vetoing
+  // the check for most of them (docs/accuracy.md, Beyond the paper 19).
+  int free_space_veto_count = 2;
   // Beyond the paper: each frame is fitted to the cache before it is judged
   // (frame_alignment.hpp); a frame that does not fit is not judged.
   FrameAlignmentParams alignment;
