@@ -19,6 +19,9 @@
 #
 # --sample-every S writes DIR/samples.tsv every S seconds (per process RSS and
 # CPU, the window's end-to-end p99), which scripts/soak.sh summarises.
+# --profile FILE runs every service with another Fast DDS profile (a
+# transport setting against the shipped one: two runs at once, each in its
+# own namespace, see the same machine load).
 # Runs in a private network namespace (root: unshare -n) on a random domain.
 # Bounded: the run's SECONDS plus at most 60 s to match and 60 s to drain.
 set -euo pipefail
@@ -38,8 +41,8 @@ while [ $# -gt 0 ]; do
     --no-labels) LABELS=0; shift ;;
     --sample-every) SAMPLE_EVERY="$2"; shift 2 ;;
     --out) OUT="$2"; shift 2 ;;
-    --profile) PROFILES="$(realpath "$2")"; shift 2 ;;
-    -h|--help) sed -n 2,24p "$0"; exit 0 ;;
+    --profile) PROFILES="$2"; shift 2 ;;
+    -h|--help) sed -n 2,26p "$0"; exit 0 ;;
     *) echo "run-fleet-bench.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -48,6 +51,8 @@ for v in ROBOTS SECONDS_RUN RATE BEAMS SAMPLE_EVERY; do
 done
 [ "$ROBOTS" -ge 1 ] && [ "$ROBOTS" -le 6 ] || { echo "run-fleet-bench.sh: --robots 1-6 (ports and DDS peers), got $ROBOTS" >&2; exit 2; }
 [ "$RATE" -ge 1 ] && [ "$BEAMS" -ge 16 ] && [ "$SECONDS_RUN" -ge 1 ] || { echo "run-fleet-bench.sh: rate, beams and seconds must be positive" >&2; exit 2; }
+[ -f "$PROFILES" ] || { echo "run-fleet-bench.sh: no Fast DDS profile at $PROFILES" >&2; exit 2; }
+PROFILES="$(cd "$(dirname "$PROFILES")" && pwd)/$(basename "$PROFILES")"  # the services run elsewhere
 
 DOMAIN=$(( (RANDOM % 200) + 10 ))
 WORK=$(mktemp -d)
@@ -64,7 +69,6 @@ fail() {
   exit 1
 }
 SF="$BUILD/tools/scanfilter"
-[ -f "$PROFILES" ] || { echo "run-fleet-bench.sh: no Fast DDS profile at $PROFILES" >&2; exit 2; }
 SERVICES=(scan_ingest jump_filter penetration_filter map_publisher)
 # Metrics ports: 20<robot><k>, k = 1 ingest, 2 jump, 3 penetration, 4 map.
 port() { echo $((20000 + 10 * $1 + $2)); }
@@ -140,13 +144,13 @@ for ((r = 1; r <= ROBOTS; r++)); do
   ns=robot$r
   for k in 2 3 4; do
     svc=${SERVICES[$((k - 1))]}
-    printf 'service: {domain_id: %s, namespace: %s, profiles_file: %s, metrics_address: 127.0.0.1:%s, log_level: warn}\n' \
+    printf 'service: {domain_id: %s, namespace: %s, profiles_file: "%s", metrics_address: 127.0.0.1:%s, log_level: warn}\n' \
       "$DOMAIN" "$ns" "$PROFILES" "$(port "$r" "$k")" > "$WORK/$ns.$svc.yaml"
   done
   echo "filter: {config: $ROOT/config/filter.yaml}" >> "$WORK/$ns.jump_filter.yaml"
   echo "filter: {config: $ROOT/config/filter.yaml}" >> "$WORK/$ns.penetration_filter.yaml"
   cat > "$WORK/$ns.scan_ingest.yaml" <<YAML
-service: {domain_id: $DOMAIN, namespace: $ns, profiles_file: $PROFILES, metrics_address: 127.0.0.1:$(port "$r" 1)}
+service: {domain_id: $DOMAIN, namespace: $ns, profiles_file: "$PROFILES", metrics_address: 127.0.0.1:$(port "$r" 1)}
 source: {kind: simulator, scene: $WORK/scene.yaml, seed: $r, rate: recorded}
 playback: {wait_for_subscribers: 1, wait_timeout_s: 60, exit_at_end: true}
 YAML

@@ -164,6 +164,10 @@ LastFrame filterWithAMixedReturn(const PenetrationFilterParams& p, int earlier_n
   LastFrame out;
   constexpr int kFrames = 16;
   const auto poseOf = [](int k) { return Pose2{0.0, 0.05 * k, 0.0}; };
+  // The frames with an earlier return must count as taken from elsewhere.
+  if (earlier_near > 0) {
+    EXPECT_GE(poseOf(kFrames - 1).y - poseOf(earlier_near - 1).y, p.rescue_min_baseline);
+  }
   // The mixed return of the last frame: the first beam past the leg's edge
   // that reaches the wall, pulled halfway to the leg.
   const auto mixReturn = [&](Scan& scan) {
@@ -174,8 +178,8 @@ LastFrame filterWithAMixedReturn(const PenetrationFilterParams& p, int earlier_n
   Scan last = castScan(world, poseOf(kFrames - 1), sensor, 360, 0.1 * (kFrames - 1));
   mixReturn(last);
   const double bearing = beamWorldAngle(last, sensor, out.mixed);
-  const Eigen::Vector2d mixed_at =
-      Eigen::Vector2d(0.0, poseOf(kFrames - 1).y) + last.ranges[out.mixed] * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
+  const Eigen::Vector2d mixed_at = Eigen::Vector2d(0.0, poseOf(kFrames - 1).y) +
+                                   last.ranges[out.mixed] * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
   for (int k = 0; k < kFrames; ++k) {
     const Pose2 pose = poseOf(k);
     Scan scan = castScan(world, pose, sensor, 360, 0.1 * k);
@@ -232,7 +236,8 @@ TEST(FreeSpaceCheck, OneReturnFromElsewhereNearItDoesNotVetoTheCheck) {
 
   PenetrationFilterParams veto_one;
   veto_one.free_space_veto_count = 1;
-  EXPECT_EQ(filterWithAMixedReturn(veto_one, 1).fast[one.mixed], kValid) << "with 1, any return from elsewhere vetoes";
+  const LastFrame vetoed = filterWithAMixedReturn(veto_one, 1);
+  EXPECT_EQ(vetoed.fast[vetoed.mixed], kValid) << "with 1, any return from elsewhere vetoes";
 }
 
 }  // namespace

@@ -82,10 +82,12 @@ struct PenetrationFilterParams {
   double free_space_margin = 0.10;  // m
   double free_space_dip = 0.05;     // m, a bracketing beam this much short of the outer ones does not count
   int free_space_min_frames = 1;
-  // Returns from elsewhere that vouch for a surface there. One was enough
-  // until it was measured: the mixed returns of a thin leg, seen from other
-  // places, scatter behind it, and one of them near another was vetoing
-  // the check for most of them (docs/accuracy.md, Beyond the paper 19).
+  // Returns from elsewhere (the rescue's evidence, so only with
+  // rescue_persistent_points; of one frame or several) that vouch for a
+  // surface there. One was enough until it was measured: the mixed returns
+  // of a thin leg, seen from other places, scatter behind it, and one of
+  // them near another was vetoing the check for most of them
+  // (docs/accuracy.md, Beyond the paper 19).
   int free_space_veto_count = 2;
   // Beyond the paper: each frame is fitted to the cache before it is judged
   // (frame_alignment.hpp); a frame that does not fit is not judged.
