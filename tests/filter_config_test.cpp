@@ -54,6 +54,7 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(s.penetration.free_space_dip, d.penetration.free_space_dip);
   EXPECT_EQ(s.penetration.free_space_min_frames, d.penetration.free_space_min_frames);
   EXPECT_EQ(s.penetration.free_space_veto_count, d.penetration.free_space_veto_count);
+  EXPECT_EQ(s.penetration.free_space_margin_per_m, d.penetration.free_space_margin_per_m);
   EXPECT_EQ(s.jump.noise_estimate, d.jump.noise_estimate);
   EXPECT_EQ(s.jump.noise_estimate_window_scans, d.jump.noise_estimate_window_scans);
   EXPECT_EQ(s.jump.noise_estimate_min_samples, d.jump.noise_estimate_min_samples);
@@ -100,6 +101,8 @@ TEST(FilterConfigErrors, NameFileLineAndKey) {
   EXPECT_EQ(errorOf("penetration_filter:\n  max_cache_frames: 60\n  free_space_min_frames: 41\n"), "no error");
   EXPECT_EQ(errorOf("penetration_filter:\n  free_space_veto_count: 0\n"),
             "f.yaml:2: penetration_filter.free_space_veto_count: expected an integer >= 1");
+  EXPECT_EQ(errorOf("penetration_filter:\n  free_space_margin_per_m: -0.01\n"),
+            "f.yaml:2: penetration_filter.free_space_margin_per_m: expected 0 <= value <= 1 (m per m)");
   EXPECT_EQ(errorOf("jump_filter:\n  noise_estimate_window_scans: 0\n"),
             "f.yaml:2: jump_filter.noise_estimate_window_scans: expected 1-1e6 (scans)");
 }

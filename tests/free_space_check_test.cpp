@@ -128,6 +128,27 @@ TEST(FreeSpaceCheck, ASightingIsThroughHitOrNothing) {
   EXPECT_EQ(sightingWith(kNaN, 3.0), S::kNone) << "no return: unknown, not free";
 }
 
+// The margin grows with the point's distance from the frame's sensor: a
+// beam that went on 12 cm beyond a point 1 m away passed through it, the
+// same 12 cm beyond a point 4 m away is within what noise and a leftover
+// pose rotation can do there (0.10 m + 0.01 m per m: 14 cm).
+TEST(FreeSpaceCheck, TheMarginGrowsWithDistance) {
+  PenetrationFilterParams params;
+  ASSERT_DOUBLE_EQ(params.free_space_margin, 0.10);
+  ASSERT_DOUBLE_EQ(params.free_space_margin_per_m, 0.01);
+  const FreeSpaceCheck check(params);
+  const auto sightingAt = [&](double distance) {
+    const Scan scan = flatScan(distance + 0.12);
+    return check.sighting(imageOf(scan), atBearing(10.5, distance));
+  };
+  using S = FreeSpaceCheck::Sighting;
+  EXPECT_EQ(sightingAt(1.0), S::kThrough);
+  EXPECT_EQ(sightingAt(4.0), S::kHit) << "12 cm is within the 14 cm margin at 4 m";
+  params.free_space_margin_per_m = 0.0;
+  EXPECT_EQ(FreeSpaceCheck(params).sighting(imageOf(flatScan(4.12)), atBearing(10.5, 4.0)), S::kThrough)
+      << "without the growth, 12 cm beyond is through at any distance";
+}
+
 TEST(FreeSpaceCheck, AtLeastMinFramesAndMoreThanHit) {
   PenetrationFilterParams p;
   p.free_space_min_frames = 2;

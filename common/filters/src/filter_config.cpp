@@ -112,6 +112,7 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.read("rescue_min_baseline", p.rescue_min_baseline);
   s.read("free_space_check", p.free_space_check);
   s.read("free_space_margin", p.free_space_margin);
+  s.read("free_space_margin_per_m", p.free_space_margin_per_m);
   s.read("free_space_dip", p.free_space_dip);
   s.read("free_space_min_frames", p.free_space_min_frames);
   s.read("free_space_veto_count", p.free_space_veto_count);
@@ -136,6 +137,7 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.requireRange("edge_vote_margin_deg", p.edge_vote_margin_deg, 0.0, 45.0, "0 <= value <= 45 (degrees; 0: off)");
   s.requireRange("edge_depth_step", p.edge_depth_step, 0.0, 10.0, "0 <= value <= 10 (m)");
   s.requireRange("free_space_margin", p.free_space_margin, 0.0, 10.0, "0 <= value <= 10 (m)");
+  s.requireRange("free_space_margin_per_m", p.free_space_margin_per_m, 0.0, 1.0, "0 <= value <= 1 (m per m)");
   s.requireRange("free_space_dip", p.free_space_dip, 0.0, 10.0, "0 <= value <= 10 (m)");
   // More than the cache holds would switch the check off without a word.
   s.requireRange("free_space_min_frames", p.free_space_min_frames, 1, static_cast<double>(p.max_cache_frames),

@@ -8,7 +8,9 @@ namespace scanfilter {
 FreeSpaceCheck::Sighting FreeSpaceCheck::sighting(const RangeImage& frame, const Eigen::Vector2d& p) const {
   const auto b = frame.bracket(p);
   if (!b || !std::isfinite(b->first) || !std::isfinite(b->second)) return Sighting::kNone;
-  const double beyond = b->distance + margin_;
+  // Farther returns move more (range noise, a pose's leftover rotation).
+  const double margin = margin_ + margin_per_m_ * b->distance;
+  const double beyond = b->distance + margin;
   const double nearer = std::min(b->first, b->second);
   if (nearer > beyond) {
     // The outer beams too: with a beam of pose error between the frames, an
@@ -20,8 +22,8 @@ FreeSpaceCheck::Sighting FreeSpaceCheck::sighting(const RangeImage& frame, const
     if (nearer < outer - dip_) return Sighting::kNone;
     return Sighting::kThrough;
   }
-  const bool hit = std::abs(b->first - b->distance) <= margin_ ||
-                   std::abs(b->second - b->distance) <= margin_;
+  const bool hit = std::abs(b->first - b->distance) <= margin ||
+                   std::abs(b->second - b->distance) <= margin;
   return hit ? Sighting::kHit : Sighting::kNone;
 }
 

@@ -13,7 +13,8 @@ namespace scanfilter {
 // edge) or a displaced one lies in free space between surfaces, where
 // cached frames taken from elsewhere looked straight through. The caller
 // tests only returns beside a depth edge (nearSideOfDepthEdge): that is where
-// mixed returns are. Parameters: free_space_margin, free_space_dip,
+// mixed returns are. Parameters: free_space_margin (+ free_space_margin_per_m
+// of p's distance from the frame's sensor), free_space_dip,
 // free_space_min_frames.
 //
 // A cached frame passed through point p when the two beams that bracket p's
@@ -30,7 +31,10 @@ class FreeSpaceCheck {
   enum class Sighting { kNone, kThrough, kHit };
 
   explicit FreeSpaceCheck(const PenetrationFilterParams& params)
-      : margin_(params.free_space_margin), dip_(params.free_space_dip), min_frames_(params.free_space_min_frames) {}
+      : margin_(params.free_space_margin),
+        margin_per_m_(params.free_space_margin_per_m),
+        dip_(params.free_space_dip),
+        min_frames_(params.free_space_min_frames) {}
 
   // What one cached frame's beams say about point p.
   Sighting sighting(const RangeImage& frame, const Eigen::Vector2d& p) const;
@@ -39,7 +43,8 @@ class FreeSpaceCheck {
   bool seenThrough(int through, int hits) const { return through >= min_frames_ && through > hits; }
 
  private:
-  double margin_;  // m
+  double margin_;        // m
+  double margin_per_m_;  // m per m of p's distance from the frame's sensor
   double dip_;     // m
   int min_frames_;
 };

@@ -80,6 +80,10 @@ struct PenetrationFilterParams {
   // depth edge is edge_depth_step. false = the paper.
   bool free_space_check = true;
   double free_space_margin = 0.10;  // m
+  // m per m of the point's distance from the cached frame's sensor, added
+  // to the margin: range noise and the pose error left after alignment both
+  // move a far return more (docs/accuracy.md, Beyond the paper 20).
+  double free_space_margin_per_m = 0.01;
   double free_space_dip = 0.05;     // m, a bracketing beam this much short of the outer ones does not count
   int free_space_min_frames = 1;
   // Returns from elsewhere (the rescue's evidence, so only with
