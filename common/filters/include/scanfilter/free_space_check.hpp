@@ -45,7 +45,7 @@ class FreeSpaceCheck {
  private:
   double margin_;        // m
   double margin_per_m_;  // m per m of p's distance from the frame's sensor
-  double dip_;     // m
+  double dip_;           // m
   int min_frames_;
 };
 
