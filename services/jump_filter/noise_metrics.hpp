@@ -2,7 +2,7 @@
 #include <prometheus/gauge.h>
 
 #include "scanfilter/dds/service_metrics.hpp"
-#include "scanfilter/range_noise_estimate.hpp"
+#include "scanfilter/jump_filter_params.hpp"
 
 namespace scanfilter::jump_service {
 

@@ -23,6 +23,13 @@ std::vector<bool> keptReturns(std::span<const std::uint8_t> labels) {
   for (std::size_t i = 0; i < labels.size(); ++i) kept[i] = labels[i] == static_cast<std::uint8_t>(PointCode::kValid);
   return kept;
 }
+
+// Every return, kept or not (the free-space check's far side of an edge).
+std::vector<bool> allReturns(const Scan& scan) {
+  std::vector<bool> returns(scan.size());
+  for (std::size_t i = 0; i < scan.size(); ++i) returns[i] = scan.hasReturn(i);
+  return returns;
+}
 }  // namespace
 
 PenetrationFilter::PenetrationFilter(const PenetrationFilterParams& params)
@@ -229,9 +236,7 @@ void PenetrationFilter::markSeenThrough(const Scan& scan, const Eigen::Vector2d&
   const double baseline_sq = params_.rescue_min_baseline * params_.rescue_min_baseline;
   // Candidates: returns with a neighbour farther by edge_depth_step, where
   // mixed returns are. Any return counts as that neighbour, kept or not.
-  std::vector<bool> returns(scan.size());
-  for (std::size_t i = 0; i < returns.size(); ++i) returns[i] = scan.hasReturn(i);
-  const std::vector<bool> candidate = nearSideOfDepthEdge(scan, returns, 1, params_.edge_depth_step);
+  const std::vector<bool> candidate = nearSideOfDepthEdge(scan, allReturns(scan), 1, params_.edge_depth_step);
   for (std::size_t i = 0; i < labels.size(); ++i) {
     if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid) || !candidate[i]) continue;
     // A return the rescue's evidence (returns of frames from elsewhere)

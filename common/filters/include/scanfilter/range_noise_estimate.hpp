@@ -53,7 +53,6 @@ class RangeNoiseEstimate {
 
   // The range noise of one band (its median residual / sqrt(1.5) · 1.4826), or 0 with too few samples.
   double bandSigma(std::size_t band) const;
-  std::size_t bandCount() const { return bands_.size(); }
 
   static constexpr double kBandWidth = 1.0;  // m
   // |residual| histogram: bins from kSmallest upwards, kBinsPerOctave a factor of 2.
