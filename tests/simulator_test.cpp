@@ -69,7 +69,7 @@ TEST(Simulator, MisdetectionsLieBehindTheSmoothWall) {
 }
 
 TEST(Simulator, OdometryDriftIsOnUnlessTheSceneTurnsItOff) {
-  const std::string plan = "walls:\n  - {points: [[0, 0], [1, 0]]}\ntrajectory: {waypoints: [[0,0],[1,1]]}\n";
+  const std::string plan = "walls:\n  - {points: [[0, 0], [1, 0]]}\ntrajectory: {waypoints: [[0,0.5],[1,1]]}\n";
   const sim::Scene drifting = sim::parseScene(plan, "s.yaml");
   EXPECT_EQ(drifting.odometry.scale_error, sim::kDefaultOdometryDrift.scale_error);
   EXPECT_EQ(drifting.odometry.heading_drift_per_m, sim::kDefaultOdometryDrift.heading_drift_per_m);
@@ -88,6 +88,30 @@ TEST(SimulatorErrors, BadSceneNamesFileLineAndKey) {
     EXPECT_STREQ(e.what(), "s.yaml:2: walls[0].material: expected rough, smooth or glass, got \"velvet\"");
   }
   EXPECT_THROW(sim::findScene("no-such-scene"), InputError);
+}
+
+// A robot cannot drive through a wall or a leg: scans from there are no
+// robot's (the home tour did, docs/simulator.md).
+TEST(SimulatorErrors, ATourThroughAWallNamesTheWaypoint) {
+  const std::string wall = "walls:\n  - {points: [[1, -1], [1, 1]]}\n";
+  try {
+    sim::parseScene(wall + "trajectory:\n  waypoints: [[0, 0.5], [0, 0], [2, 0]]\n", "s.yaml");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "s.yaml:4: trajectory.waypoints[1]: the way from here to waypoints[2] passes 0.000 m from the wall "
+                 "or box side (1.00, -1.00)-(1.00, 1.00), nearer than trajectory.robot_radius (0.170 m): the robot "
+                 "would drive through it");
+  }
+}
+
+TEST(SimulatorErrors, ATourMustKeepTheRobotRadiusFromALeg) {
+  // The way passes 0.10 m from the leg's centre, 0.085 m from its surface.
+  const std::string scene = "walls:\n  - {points: [[0, 5], [3, 5]]}\nlegs:\n  - {centre: [1.5, 0.1], radius: 0.015}\n";
+  const std::string tour = "  waypoints: [[0, 0], [3, 0]]\n";
+  EXPECT_THROW(sim::parseScene(scene + "trajectory:\n" + tour, "s.yaml"), InputError);
+  EXPECT_THROW(sim::parseScene(scene + "trajectory:\n  robot_radius: 0.09\n" + tour, "s.yaml"), InputError);
+  EXPECT_NO_THROW(sim::parseScene(scene + "trajectory:\n  robot_radius: 0.08\n" + tour, "s.yaml"));
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -6,6 +7,7 @@
 
 #include "scanfilter/input_error.hpp"
 #include "scanfilter/sim/scene.hpp"
+#include "scanfilter/sim/tour_clearance.hpp"
 #include "scanfilter/yaml_section.hpp"
 #include "yaml_sections.hpp"
 
@@ -73,12 +75,27 @@ void readGeometry(const SceneParser& p, const YAML::Node& root, Scene& scene) {
 
 void readTrajectory(const SceneParser& p, const YAML::Node& node, Trajectory& t) {
   if (!node) p.fail(node, "trajectory", "missing: a scene needs a trajectory");
-  p.checkKeys(node, "trajectory", {"waypoints", "speed", "turn_rate_deg"});
+  p.checkKeys(node, "trajectory", {"waypoints", "speed", "turn_rate_deg", "robot_radius"});
   t.speed = p.positive(node, "trajectory", "speed", t.speed);
+  t.robot_radius = p.positive(node, "trajectory", "robot_radius", t.robot_radius);
   t.turn_rate_deg = p.positive(node, "trajectory", "turn_rate_deg", t.turn_rate_deg);
   const YAML::Node w = node["waypoints"];
   if (!w || !w.IsSequence() || w.size() < 2) p.fail(node, "trajectory.waypoints", "expected at least two [x, y] points");
   for (std::size_t k = 0; k < w.size(); ++k) t.waypoints.push_back(p.point(w[k], "trajectory.waypoints[" + std::to_string(k) + "]"));
+}
+
+// A tour the robot's body does not fit along is an error, not a scene: it
+// would scan from inside a wall or a stool (tour_clearance.hpp).
+void checkTourFits(const SceneParser& p, const YAML::Node& trajectory, const Scene& scene) {
+  const auto obstruction = firstObstruction(scene);
+  if (!obstruction) return;
+  const std::size_t k = obstruction->from_waypoint;
+  char problem[256];
+  std::snprintf(problem, sizeof problem,
+                "the way from here to waypoints[%zu] passes %.3f m from %s, nearer than trajectory.robot_radius (%.3f m): "
+                "the robot would drive through it",
+                k + 1, obstruction->clearance, obstruction->obstacle.c_str(), scene.trajectory.robot_radius);
+  p.fail(trajectory["waypoints"][k], "trajectory.waypoints[" + std::to_string(k) + "]", problem);
 }
 
 }  // namespace
@@ -104,6 +121,7 @@ Scene parseScene(const std::string& yaml_text, const std::string& name) {
   readOdometry(p, root["odometry"], scene.odometry);
   readGeometry(p, root, scene);
   readTrajectory(p, root["trajectory"], scene.trajectory);
+  checkTourFits(p, root["trajectory"], scene);
   if (scene.segments.empty()) p.fail(root, "walls", "a scene needs at least one wall");
   return scene;
 }

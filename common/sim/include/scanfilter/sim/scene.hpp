@@ -30,6 +30,9 @@ struct Trajectory {
   std::vector<Eigen::Vector2d> waypoints;
   double speed = 0.3;           // m/s
   double turn_rate_deg = 90.0;  // deg/s, in-place turns at waypoints
+  // m, the robot's body about the pose (a sweeping robot is about 0.35 m
+  // across): the tour must keep this far from every wall, box and leg.
+  double robot_radius = 0.17;
 };
 
 struct Scene {

@@ -1,0 +1,55 @@
+#include "scanfilter/sim/tour_clearance.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace scanfilter::sim {
+
+namespace {
+
+double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+double pointToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const Eigen::Vector2d d = b - a;
+  const double length_sq = d.squaredNorm();
+  const double t = length_sq == 0.0 ? 0.0 : std::clamp((p - a).dot(d) / length_sq, 0.0, 1.0);
+  return (a + t * d - p).norm();
+}
+
+// Distance between two segments: 0 when they cross, else the nearest end to
+// the other segment.
+double segmentToSegment(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                        const Eigen::Vector2d& d) {
+  const double abc = cross(b - a, c - a), abd = cross(b - a, d - a);
+  const double cda = cross(d - c, a - c), cdb = cross(d - c, b - c);
+  if (abc * abd < 0.0 && cda * cdb < 0.0) return 0.0;
+  return std::min({pointToSegment(a, c, d), pointToSegment(b, c, d), pointToSegment(c, a, b), pointToSegment(d, a, b)});
+}
+
+std::string where(const Eigen::Vector2d& p) {
+  char text[64];
+  std::snprintf(text, sizeof text, "(%.2f, %.2f)", p.x(), p.y());
+  return text;
+}
+
+}  // namespace
+
+std::optional<TourObstruction> firstObstruction(const Scene& scene) {
+  const auto& waypoints = scene.trajectory.waypoints;
+  const double radius = scene.trajectory.robot_radius;
+  for (std::size_t k = 0; k + 1 < waypoints.size(); ++k) {
+    const Eigen::Vector2d& from = waypoints[k];
+    const Eigen::Vector2d& to = waypoints[k + 1];
+    for (const Segment& s : scene.segments) {
+      const double gap = segmentToSegment(from, to, s.a, s.b);
+      if (gap < radius) return TourObstruction{k, gap, "the wall or box side " + where(s.a) + "-" + where(s.b)};
+    }
+    for (const Leg& leg : scene.legs) {
+      const double gap = pointToSegment(leg.centre, from, to) - leg.radius;
+      if (gap < radius) return TourObstruction{k, std::max(gap, 0.0), "the leg at " + where(leg.centre)};
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace scanfilter::sim
