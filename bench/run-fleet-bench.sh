@@ -14,14 +14,16 @@
 # penetration_filter from its histogram (linear within a bucket).
 #
 #   bench/run-fleet-bench.sh [--robots N] [--seconds S] [--rate HZ] [--beams B] [--no-labels]
-#                            [--sample-every S] [--out DIR] [--profile FILE]
-#   defaults: 4 robots, 60 s, 40 Hz, 360 beams, deploy/fastdds-loopback.xml
+#                            [--sample-every S] [--out DIR] [--profile FILE] [--filter-config FILE]
+#   defaults: 4 robots, 60 s, 40 Hz, 360 beams, deploy/fastdds-loopback.xml, config/filter.yaml
 #
 # --sample-every S writes DIR/samples.tsv every S seconds (per process RSS and
 # CPU, the window's end-to-end p99), which scripts/soak.sh summarises.
 # --profile FILE runs every service with another Fast DDS profile (a
 # transport setting against the shipped one: two runs at once, each in its
-# own namespace, see the same machine load).
+# own namespace, see the same machine load). --filter-config FILE runs both
+# filters (and the offline replay the labels are checked against) with
+# another filter config, for the same kind of pair.
 # Runs in a private network namespace (root: unshare -n) on a random domain.
 # Bounded: the run's SECONDS plus at most 60 s to match and 60 s to drain.
 set -euo pipefail
@@ -32,6 +34,7 @@ if [ -z "${SCANFILTER_IN_NETNS:-}" ] && [ "$(id -u)" = 0 ] && unshare -n true 2>
 fi
 ROBOTS=4 SECONDS_RUN=60 RATE=40 BEAMS=360 LABELS=1 SAMPLE_EVERY=0 OUT=""
 PROFILES="$ROOT/deploy/fastdds-loopback.xml"
+FILTER_CONFIG="$ROOT/config/filter.yaml"
 while [ $# -gt 0 ]; do
   case "$1" in
     --robots) ROBOTS="$2"; shift 2 ;;
@@ -42,7 +45,8 @@ while [ $# -gt 0 ]; do
     --sample-every) SAMPLE_EVERY="$2"; shift 2 ;;
     --out) OUT="$2"; shift 2 ;;
     --profile) PROFILES="$2"; shift 2 ;;
-    -h|--help) sed -n 2,26p "$0"; exit 0 ;;
+    --filter-config) FILTER_CONFIG="$2"; shift 2 ;;
+    -h|--help) sed -n 2,28p "$0"; exit 0 ;;
     *) echo "run-fleet-bench.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -53,6 +57,8 @@ done
 [ "$RATE" -ge 1 ] && [ "$BEAMS" -ge 16 ] && [ "$SECONDS_RUN" -ge 1 ] || { echo "run-fleet-bench.sh: rate, beams and seconds must be positive" >&2; exit 2; }
 [ -f "$PROFILES" ] || { echo "run-fleet-bench.sh: no Fast DDS profile at $PROFILES" >&2; exit 2; }
 PROFILES="$(cd "$(dirname "$PROFILES")" && pwd)/$(basename "$PROFILES")"  # the services run elsewhere
+[ -f "$FILTER_CONFIG" ] || { echo "run-fleet-bench.sh: no filter config at $FILTER_CONFIG" >&2; exit 2; }
+FILTER_CONFIG="$(cd "$(dirname "$FILTER_CONFIG")" && pwd)/$(basename "$FILTER_CONFIG")"
 
 DOMAIN=$(( (RANDOM % 200) + 10 ))
 WORK=$(mktemp -d)
@@ -147,8 +153,8 @@ for ((r = 1; r <= ROBOTS; r++)); do
     printf 'service: {domain_id: %s, namespace: %s, profiles_file: "%s", metrics_address: 127.0.0.1:%s, log_level: warn}\n' \
       "$DOMAIN" "$ns" "$PROFILES" "$(port "$r" "$k")" > "$WORK/$ns.$svc.yaml"
   done
-  echo "filter: {config: $ROOT/config/filter.yaml}" >> "$WORK/$ns.jump_filter.yaml"
-  echo "filter: {config: $ROOT/config/filter.yaml}" >> "$WORK/$ns.penetration_filter.yaml"
+  echo "filter: {config: \"$FILTER_CONFIG\"}" >> "$WORK/$ns.jump_filter.yaml"
+  echo "filter: {config: \"$FILTER_CONFIG\"}" >> "$WORK/$ns.penetration_filter.yaml"
   cat > "$WORK/$ns.scan_ingest.yaml" <<YAML
 service: {domain_id: $DOMAIN, namespace: $ns, profiles_file: "$PROFILES", metrics_address: 127.0.0.1:$(port "$r" 1)}
 source: {kind: simulator, scene: $WORK/scene.yaml, seed: $r, rate: recorded}
@@ -314,7 +320,7 @@ if [ "$LABELS" = 1 ]; then
     kill -TERM "${PID_OF[$ns.recorder]}"
     wait "${PID_OF[$ns.recorder]}" || true
     "$SF" simulate --scene "$WORK/scene.yaml" --seed "$r" --max-frames "${PUBLISHED[$ns]}" -o "$WORK/$ns.in.scanlog.jsonl" > /dev/null
-    "$SF" replay "$WORK/$ns.in.scanlog.jsonl" --config "$ROOT/config/filter.yaml" -o "$WORK/$ns.offline.scanlog.jsonl" -q
+    "$SF" replay "$WORK/$ns.in.scanlog.jsonl" --config "$FILTER_CONFIG" -o "$WORK/$ns.offline.scanlog.jsonl" -q
     "$SF" diff "$WORK/$ns.offline.scanlog.jsonl" "$WORK/$ns.live.scanlog.jsonl" > "$WORK/$ns.diff.txt" 2>&1 ||
       fail "$ns: live labels differ from its own offline replay: $(cat "$WORK/$ns.diff.txt")"
     echo "$ns: ${PUBLISHED[$ns]} scans, labels equal its own offline replay"

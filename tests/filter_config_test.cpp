@@ -35,6 +35,7 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(s.penetration.behind_margin, d.penetration.behind_margin);
   EXPECT_EQ(s.penetration.pose_jump_reset, d.penetration.pose_jump_reset);
   EXPECT_EQ(s.penetration.max_cache_frames, d.penetration.max_cache_frames);
+  EXPECT_EQ(s.penetration.cache_min_interval, d.penetration.cache_min_interval);
   EXPECT_EQ(s.penetration.cache_misdetected_points, d.penetration.cache_misdetected_points);
   EXPECT_EQ(s.jump.span_range, d.jump.span_range);
   EXPECT_EQ(s.jump.straight_run_max_incidence_deg, d.jump.straight_run_max_incidence_deg);

@@ -188,6 +188,35 @@ TEST(PenetrationFilter, OldFramesExpireAfterTMax) {
   EXPECT_EQ(labels[i], kValid);
 }
 
+// cache_min_interval: at 30 Hz every second frame joins the cache (66.7 ms
+// apart) and every frame is still judged; 0 caches them all; a 10 Hz scanner
+// with stamps 60-140 ms apart (the Mines logs) loses none.
+TEST(PenetrationFilter, FramesSoonerThanTheIntervalAreJudgedButNotCached) {
+  const SensorInfo sensor = test::simpleSensor();
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> noise(-0.01, 0.01);
+  const auto run = [&](double cache_min_interval, const std::vector<double>& stamps) {
+    PenetrationFilterParams p;
+    p.cache_min_interval = cache_min_interval;
+    BothFilters filters(p);
+    std::uint8_t last = kValid;
+    for (std::size_t k = 0; k < stamps.size(); ++k) {
+      Scan scan = castScan(kRoom, {0.02 * static_cast<double>(k), 0.0, 0.0}, sensor, 360, stamps[k]);
+      for (auto& r : scan.ranges) r += noise(rng);
+      const std::size_t i = test::beamTowards(scan, sensor, 0.3);
+      if (k + 1 == stamps.size()) scan.ranges[i] += 0.8;  // the last frame: a return behind the wall
+      last = filters.apply(scan, sensor)[i];
+    }
+    return std::pair{filters.fast().cachedFrames(), last};
+  };
+  std::vector<double> at_30_hz;
+  for (int k = 0; k < 20; ++k) at_30_hz.push_back(k / 30.0);
+  // The last frame (k = 19) is one the cache skips: judged all the same.
+  EXPECT_EQ(run(0.05, at_30_hz), std::pair(std::size_t{10}, kMisdetected));
+  EXPECT_EQ(run(0.0, at_30_hz).first, 20u);
+  EXPECT_EQ(run(0.05, {0.0, 0.06, 0.2, 0.26, 0.40, 0.48, 0.62, 0.70}).first, 8u);
+}
+
 TEST(PenetrationFilter, PoseJumpResetsTheCache) {
   const SensorInfo sensor = test::simpleSensor();
   BothFilters filters(PenetrationFilterParams{});

@@ -103,6 +103,7 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.read("behind_margin", p.behind_margin);
   s.read("pose_jump_reset", p.pose_jump_reset);
   s.read("max_cache_frames", p.max_cache_frames);
+  s.read("cache_min_interval", p.cache_min_interval);
   s.read("cache_misdetected_points", p.cache_misdetected_points);
   s.read("edge_vote_margin_deg", p.edge_vote_margin_deg);
   s.read("edge_depth_step", p.edge_depth_step);
@@ -131,6 +132,7 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.requireRange("behind_margin", p.behind_margin, 0.0, 1e9, "a value >= 0 (m)");
   s.requireRange("pose_jump_reset", p.pose_jump_reset, 0.0, 1e9, "a value > 0 (m)");
   s.requireRange("max_cache_frames", static_cast<double>(p.max_cache_frames), 1, 1e7, "an integer >= 1");
+  s.requireRange("cache_min_interval", p.cache_min_interval, 0.0, 10.0, "0 <= value <= 10 (s; 0: every frame)");
   s.requireRange("rescue_min_count", p.rescue_min_count, 1, 1e9, "an integer >= 1");
   s.requireRange("rescue_radius", p.rescue_radius, 0.0, 1.0, "0 <= value <= 1 (m)");
   s.requireRange("rescue_min_baseline", p.rescue_min_baseline, 0.0, 100.0, "0 <= value <= 100 (m; 0: off)");

@@ -73,6 +73,10 @@ void PenetrationFilter::expireFrames(Stamp stamp) {
   }
 }
 
+bool PenetrationFilter::cachesFrameAt(Stamp stamp) const {
+  return cache_.empty() || stamp.secondsSince(cache_.back().stamp) >= params_.cache_min_interval;
+}
+
 void PenetrationFilter::cacheFrame(const Scan& scan, const SensorInfo& sensor, const Eigen::Vector2d& origin,
                                    std::span<const std::uint8_t> labels) {
   // Without a baseline the frame's returns are evidence at once, added here
@@ -139,7 +143,8 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
   } else {
     placeFrame(scan, sensor);
   }
-  cacheFrame(scan, sensor, origin, labels);  // where the alignment put it: the cache stays self-consistent
+  // Where the alignment put it: the cache stays self-consistent.
+  if (cachesFrameAt(scan.stamp)) cacheFrame(scan, sensor, origin, labels);
 }
 
 int PenetrationFilter::edgeHalfWidthBeams(const Scan& scan) const {

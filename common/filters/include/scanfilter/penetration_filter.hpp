@@ -111,6 +111,8 @@ class PenetrationFilter {
   int evidenceAround(const Eigen::Vector2d& p) const;
   void resetOnPoseJump(const Eigen::Vector2d& origin, Stamp stamp);
   void expireFrames(Stamp stamp);
+  // Whether a frame taken at `stamp` joins the cache (cache_min_interval).
+  bool cachesFrameAt(Stamp stamp) const;
   void cacheFrame(const Scan& scan, const SensorInfo& sensor, const Eigen::Vector2d& origin,
                   std::span<const std::uint8_t> labels);
   // free_space_check: kept returns that far cached frames looked through

@@ -39,6 +39,13 @@ struct PenetrationFilterParams {
   double behind_margin = 0.0;       // m, step (e) read literally: cells this near beyond p mark it
   double pose_jump_reset = 0.5;     // m, a larger sensor jump between frames resets the cache
   std::size_t max_cache_frames = 40;  // bound on cached frames whatever T_max says: obs_th counts over them (config/filter.yaml)
+  // Beyond the paper: a frame taken sooner than this after the last cached
+  // one is judged but not cached. At 25-40 Hz the 40 cached frames would
+  // span 1-1.6 s of nearly one viewpoint; every second frame spans twice
+  // that, and caching costs half (docs/accuracy.md, Beyond the paper 21).
+  // Below the period of 10-15 Hz scanners with jittery stamps (the Mines
+  // logs' 10 Hz frames come 60-140 ms apart). 0: every frame (the paper).
+  double cache_min_interval = 0.05;  // s
   bool cache_misdetected_points = false;  // misdetected points vote in later grids
   // Beyond the paper (depth_edges.hpp): returns within this angle (at least
   // one beam) of a kept return more than `edge_depth_step` farther do not
