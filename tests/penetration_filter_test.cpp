@@ -190,7 +190,8 @@ TEST(PenetrationFilter, OldFramesExpireAfterTMax) {
 
 // cache_min_interval: at 30 Hz every second frame joins the cache (66.7 ms
 // apart) and every frame is still judged; 0 caches them all; a 10 Hz scanner
-// with stamps 60-140 ms apart (the Mines logs) loses none.
+// with stamps 60-140 ms apart (the Mines logs) loses none, nor does a log
+// whose stamps do not advance.
 TEST(PenetrationFilter, FramesSoonerThanTheIntervalAreJudgedButNotCached) {
   const SensorInfo sensor = test::simpleSensor();
   std::mt19937 rng(7);
@@ -215,6 +216,8 @@ TEST(PenetrationFilter, FramesSoonerThanTheIntervalAreJudgedButNotCached) {
   EXPECT_EQ(run(0.05, at_30_hz), std::pair(std::size_t{10}, kMisdetected));
   EXPECT_EQ(run(0.0, at_30_hz).first, 20u);
   EXPECT_EQ(run(0.05, {0.0, 0.06, 0.2, 0.26, 0.40, 0.48, 0.62, 0.70}).first, 8u);
+  // Stamps that do not advance (a log printed with too few digits) are no clock.
+  EXPECT_EQ(run(0.05, std::vector<double>(6, 3.0)).first, 6u);
 }
 
 TEST(PenetrationFilter, PoseJumpResetsTheCache) {

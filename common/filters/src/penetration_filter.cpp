@@ -74,7 +74,11 @@ void PenetrationFilter::expireFrames(Stamp stamp) {
 }
 
 bool PenetrationFilter::cachesFrameAt(Stamp stamp) const {
-  return cache_.empty() || stamp.secondsSince(cache_.back().stamp) >= params_.cache_min_interval;
+  if (cache_.empty()) return true;
+  const double since = stamp.secondsSince(cache_.back().stamp);
+  // A stamp that did not advance says nothing about time (csail's log
+  // repeats one stamp for 404 scans): every such frame is cached, as before.
+  return since <= 0.0 || since >= params_.cache_min_interval;
 }
 
 void PenetrationFilter::cacheFrame(const Scan& scan, const SensorInfo& sensor, const Eigen::Vector2d& origin,

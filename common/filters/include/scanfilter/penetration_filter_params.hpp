@@ -45,6 +45,8 @@ struct PenetrationFilterParams {
   // that, and caching costs half (docs/accuracy.md, Beyond the paper 21).
   // Below the period of 10-15 Hz scanners with jittery stamps (the Mines
   // logs' 10 Hz frames come 60-140 ms apart). 0: every frame (the paper).
+  // A frame whose stamp is not later than the last cached one's is cached:
+  // such stamps are no clock.
   double cache_min_interval = 0.05;  // s
   bool cache_misdetected_points = false;  // misdetected points vote in later grids
   // Beyond the paper (depth_edges.hpp): returns within this angle (at least
