@@ -102,6 +102,8 @@ TEST(FilterConfigErrors, NameFileLineAndKey) {
   EXPECT_EQ(errorOf("penetration_filter:\n  max_cache_frames: 60\n  free_space_min_frames: 41\n"), "no error");
   EXPECT_EQ(errorOf("penetration_filter:\n  free_space_veto_count: 0\n"),
             "f.yaml:2: penetration_filter.free_space_veto_count: expected an integer >= 1");
+  EXPECT_EQ(errorOf("penetration_filter:\n  cache_min_interval: -0.1\n"),
+            "f.yaml:2: penetration_filter.cache_min_interval: expected 0 <= value <= 10 (s; 0: every frame)");
   EXPECT_EQ(errorOf("penetration_filter:\n  free_space_margin_per_m: -0.01\n"),
             "f.yaml:2: penetration_filter.free_space_margin_per_m: expected 0 <= value <= 1 (m per m)");
   EXPECT_EQ(errorOf("jump_filter:\n  noise_estimate_window_scans: 0\n"),
