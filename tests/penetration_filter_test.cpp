@@ -188,10 +188,10 @@ TEST(PenetrationFilter, OldFramesExpireAfterTMax) {
   EXPECT_EQ(labels[i], kValid);
 }
 
-// cache_min_interval: at 30 Hz every second frame joins the cache (66.7 ms
-// apart) and every frame is still judged; 0 caches them all; a 10 Hz scanner
-// with stamps 60-140 ms apart (the Mines logs) loses none, nor does a log
-// whose stamps do not advance.
+// cache_min_interval: at 30 Hz, and at 40 Hz with stamps 2 ms off, every
+// second frame joins the cache and every frame is still judged; 0 caches them
+// all; 10 Hz frames 60-140 ms apart lose none; stamps that do not advance or
+// go back are no clock, and those frames are cached.
 TEST(PenetrationFilter, FramesSoonerThanTheIntervalAreJudgedButNotCached) {
   const SensorInfo sensor = test::simpleSensor();
   std::mt19937 rng(7);
@@ -210,14 +210,40 @@ TEST(PenetrationFilter, FramesSoonerThanTheIntervalAreJudgedButNotCached) {
     }
     return std::pair{filters.fast().cachedFrames(), last};
   };
-  std::vector<double> at_30_hz;
-  for (int k = 0; k < 20; ++k) at_30_hz.push_back(k / 30.0);
+  const double shipped = PenetrationFilterParams{}.cache_min_interval;
+  std::vector<double> at_30_hz, at_40_hz_jittery;
+  for (int k = 0; k < 20; ++k) {
+    at_30_hz.push_back(k / 30.0);
+    at_40_hz_jittery.push_back(k / 40.0 + (k % 3 == 0 ? 0.002 : -0.002));
+  }
   // The last frame (k = 19) is one the cache skips: judged all the same.
-  EXPECT_EQ(run(0.05, at_30_hz), std::pair(std::size_t{10}, kMisdetected));
+  EXPECT_EQ(run(shipped, at_30_hz), std::pair(std::size_t{10}, kMisdetected));
+  EXPECT_EQ(run(shipped, at_40_hz_jittery).first, 10u);
   EXPECT_EQ(run(0.0, at_30_hz).first, 20u);
-  EXPECT_EQ(run(0.05, {0.0, 0.06, 0.2, 0.26, 0.40, 0.48, 0.62, 0.70}).first, 8u);
-  // Stamps that do not advance (a log printed with too few digits) are no clock.
-  EXPECT_EQ(run(0.05, std::vector<double>(6, 3.0)).first, 6u);
+  EXPECT_EQ(run(shipped, {0.0, 0.06, 0.2, 0.26, 0.40, 0.48, 0.62, 0.70}).first, 8u);
+  EXPECT_EQ(run(shipped, std::vector<double>(6, 3.0)).first, 6u);
+  EXPECT_EQ(run(shipped, {1.0, 1.1, 0.5, 0.4}).first, 4u);
+}
+
+// A frame the cache skips does not push the oldest cached one out.
+TEST(PenetrationFilter, ASkippedFrameLeavesAFullCacheAsItWas) {
+  const SensorInfo sensor = test::simpleSensor();
+  PenetrationFilterParams p;
+  p.max_cache_frames = 4;
+  p.cache_min_interval = 0.05;
+  BothFilters filters(p);
+  for (int k = 0; k < 4; ++k) filters.apply(castScan(kRoom, {0.02 * k, 0.0, 0.0}, sensor, 360, 0.1 * k), sensor);
+  ASSERT_EQ(filters.fast().cachedFrames(), 4u);
+  const auto votes = [&] {
+    long sum = 0;
+    filters.fast().grid().forEachCellAbove(0, [&](CellIndex, int count) { sum += count; });
+    return sum;
+  };
+  const long cached_votes = votes();
+  ASSERT_GT(cached_votes, 0);
+  filters.apply(castScan(kRoom, {0.07, 0.0, 0.0}, sensor, 360, 0.32), sensor);  // 20 ms after the last: skipped
+  EXPECT_EQ(filters.fast().cachedFrames(), 4u);
+  EXPECT_EQ(votes(), cached_votes) << "the oldest frame's votes were removed";
 }
 
 TEST(PenetrationFilter, PoseJumpResetsTheCache) {

@@ -63,9 +63,9 @@ void PenetrationFilter::resetOnPoseJump(const Eigen::Vector2d& origin, Stamp sta
   last_origin_ = origin;
 }
 
-void PenetrationFilter::expireFrames(Stamp stamp) {
+void PenetrationFilter::expireFrames(Stamp stamp, bool making_room) {
   while (!cache_.empty() && (stamp.secondsSince(cache_.front().stamp) > params_.frame_lifetime ||
-                             cache_.size() >= params_.max_cache_frames)) {
+                             (making_room && cache_.size() >= params_.max_cache_frames))) {
     const CachedFrame& oldest = cache_.front();
     grid_.remove(oldest.votes);
     if (oldest.in_evidence) removeRescueEvidence(oldest);
@@ -138,7 +138,11 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
   const Eigen::Vector2d origin = sensorOrigin(scan.pose, sensor.mount);
   resetOnPoseJump(origin, scan.stamp);
   ++frames_seen_;
-  expireFrames(scan.stamp);
+  expireFrames(scan.stamp, false);
+  // Decided before judging, so that a frame the cache will skip does not
+  // push the oldest one out (and is judged against all of them).
+  const bool caches = cachesFrameAt(scan.stamp);
+  if (caches) expireFrames(scan.stamp, true);
   if (evidenceWaitsForBaseline()) admitEvidence(origin);
   if (warmedUp()) {
     const Judgement judgement = alignAndJudge(scan, sensor, labels);
@@ -148,7 +152,7 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
     placeFrame(scan, sensor);
   }
   // Where the alignment put it: the cache stays self-consistent.
-  if (cachesFrameAt(scan.stamp)) cacheFrame(scan, sensor, origin, labels);
+  if (caches) cacheFrame(scan, sensor, origin, labels);
 }
 
 int PenetrationFilter::edgeHalfWidthBeams(const Scan& scan) const {

@@ -1,7 +1,7 @@
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <numbers>
 #include <sstream>
 
@@ -90,12 +90,11 @@ void checkTourFits(const SceneParser& p, const YAML::Node& trajectory, const Sce
   const auto obstruction = firstObstruction(scene);
   if (!obstruction) return;
   const std::size_t k = obstruction->from_waypoint;
-  char problem[256];
-  std::snprintf(problem, sizeof problem,
-                "the way from here to waypoints[%zu] passes %.3f m from %s, nearer than trajectory.robot_radius (%.3f m): "
-                "the robot would drive through it",
-                k + 1, obstruction->clearance, obstruction->obstacle.c_str(), scene.trajectory.robot_radius);
-  p.fail(trajectory["waypoints"][k], "trajectory.waypoints[" + std::to_string(k) + "]", problem);
+  std::ostringstream problem;
+  problem << std::fixed << std::setprecision(3) << "the way from here to waypoints[" << k + 1 << "] passes "
+          << obstruction->clearance << " m from " << obstruction->obstacle << ", nearer than trajectory.robot_radius ("
+          << scene.trajectory.robot_radius << " m): the robot would drive through it";
+  p.fail(trajectory["waypoints"][k], "trajectory.waypoints[" + std::to_string(k) + "]", problem.str());
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 #include "scanfilter/sim/tour_clearance.hpp"
 
 #include <algorithm>
-#include <cstdio>
+#include <iomanip>
+#include <sstream>
 
 namespace scanfilter::sim {
 
@@ -9,27 +10,28 @@ namespace {
 
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
-double pointToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+double distanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   const Eigen::Vector2d d = b - a;
   const double length_sq = d.squaredNorm();
   const double t = length_sq == 0.0 ? 0.0 : std::clamp((p - a).dot(d) / length_sq, 0.0, 1.0);
   return (a + t * d - p).norm();
 }
 
-// Distance between two segments: 0 when they cross, else the nearest end to
-// the other segment.
-double segmentToSegment(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
-                        const Eigen::Vector2d& d) {
+// 0 when they cross, else the distance from the nearest end to the other
+// segment.
+double distanceBetweenSegments(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                               const Eigen::Vector2d& d) {
   const double abc = cross(b - a, c - a), abd = cross(b - a, d - a);
   const double cda = cross(d - c, a - c), cdb = cross(d - c, b - c);
   if (abc * abd < 0.0 && cda * cdb < 0.0) return 0.0;
-  return std::min({pointToSegment(a, c, d), pointToSegment(b, c, d), pointToSegment(c, a, b), pointToSegment(d, a, b)});
+  return std::min({distanceToSegment(a, c, d), distanceToSegment(b, c, d), distanceToSegment(c, a, b),
+                   distanceToSegment(d, a, b)});
 }
 
 std::string where(const Eigen::Vector2d& p) {
-  char text[64];
-  std::snprintf(text, sizeof text, "(%.2f, %.2f)", p.x(), p.y());
-  return text;
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(2) << '(' << p.x() << ", " << p.y() << ')';
+  return text.str();
 }
 
 }  // namespace
@@ -41,11 +43,11 @@ std::optional<TourObstruction> firstObstruction(const Scene& scene) {
     const Eigen::Vector2d& from = waypoints[k];
     const Eigen::Vector2d& to = waypoints[k + 1];
     for (const Segment& s : scene.segments) {
-      const double gap = segmentToSegment(from, to, s.a, s.b);
+      const double gap = distanceBetweenSegments(from, to, s.a, s.b);
       if (gap < radius) return TourObstruction{k, gap, "the wall or box side " + where(s.a) + "-" + where(s.b)};
     }
     for (const Leg& leg : scene.legs) {
-      const double gap = pointToSegment(leg.centre, from, to) - leg.radius;
+      const double gap = distanceToSegment(leg.centre, from, to) - leg.radius;
       if (gap < radius) return TourObstruction{k, std::max(gap, 0.0), "the leg at " + where(leg.centre)};
     }
   }

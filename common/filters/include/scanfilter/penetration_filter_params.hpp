@@ -43,11 +43,12 @@ struct PenetrationFilterParams {
   // one is judged but not cached. At 25-40 Hz the 40 cached frames would
   // span 1-1.6 s of nearly one viewpoint; every second frame spans twice
   // that, and caching costs half (docs/accuracy.md, Beyond the paper 21).
-  // Below the period of 10-15 Hz scanners with jittery stamps (the Mines
-  // logs' 10 Hz frames come 60-140 ms apart). 0: every frame (the paper).
+  // 45 ms lies at least 5 ms from one, two or three periods of the common
+  // rates (10, 12.5, 15, 20, 25, 30, 40, 50 Hz), so stamp jitter below that
+  // does not change which frames are cached. 0: every frame (the paper).
   // A frame whose stamp is not later than the last cached one's is cached:
   // such stamps are no clock.
-  double cache_min_interval = 0.05;  // s
+  double cache_min_interval = 0.045;  // s
   bool cache_misdetected_points = false;  // misdetected points vote in later grids
   // Beyond the paper (depth_edges.hpp): returns within this angle (at least
   // one beam) of a kept return more than `edge_depth_step` farther do not
