@@ -190,7 +190,7 @@ TEST(PenetrationFilter, OldFramesExpireAfterTMax) {
 
 // cache_min_interval: at 30 Hz, and at 40 Hz with stamps 2 ms off, every
 // second frame joins the cache and every frame is still judged; 0 caches them
-// all; 10 Hz frames 60-140 ms apart lose none; stamps that do not advance or
+// all; 10 Hz frames 60-140 ms apart (most of the Mines logs') lose none; stamps that do not advance or
 // go back are no clock, and those frames are cached.
 TEST(PenetrationFilter, FramesSoonerThanTheIntervalAreJudgedButNotCached) {
   const SensorInfo sensor = test::simpleSensor();

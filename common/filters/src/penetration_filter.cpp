@@ -63,21 +63,26 @@ void PenetrationFilter::resetOnPoseJump(const Eigen::Vector2d& origin, Stamp sta
   last_origin_ = origin;
 }
 
-void PenetrationFilter::expireFrames(Stamp stamp, bool making_room) {
-  while (!cache_.empty() && (stamp.secondsSince(cache_.front().stamp) > params_.frame_lifetime ||
-                             (making_room && cache_.size() >= params_.max_cache_frames))) {
-    const CachedFrame& oldest = cache_.front();
-    grid_.remove(oldest.votes);
-    if (oldest.in_evidence) removeRescueEvidence(oldest);
-    cache_.pop_front();
-  }
+void PenetrationFilter::dropOldestFrame() {
+  const CachedFrame& oldest = cache_.front();
+  grid_.remove(oldest.votes);
+  if (oldest.in_evidence) removeRescueEvidence(oldest);
+  cache_.pop_front();
+}
+
+void PenetrationFilter::expireFrames(Stamp stamp) {
+  while (!cache_.empty() && stamp.secondsSince(cache_.front().stamp) > params_.frame_lifetime) dropOldestFrame();
+}
+
+void PenetrationFilter::makeRoomForAFrame() {
+  while (!cache_.empty() && cache_.size() >= params_.max_cache_frames) dropOldestFrame();
 }
 
 bool PenetrationFilter::cachesFrameAt(Stamp stamp) const {
   if (cache_.empty()) return true;
   const double since = stamp.secondsSince(cache_.back().stamp);
-  // A stamp that did not advance says nothing about time (csail's log
-  // repeats one stamp for 404 scans): every such frame is cached, as before.
+  // A stamp that did not advance says nothing about time (csail's log has
+  // two distinct stamps for 406 scans): every such frame is cached, as before.
   return since <= 0.0 || since >= params_.cache_min_interval;
 }
 
@@ -138,11 +143,11 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
   const Eigen::Vector2d origin = sensorOrigin(scan.pose, sensor.mount);
   resetOnPoseJump(origin, scan.stamp);
   ++frames_seen_;
-  expireFrames(scan.stamp, false);
+  expireFrames(scan.stamp);
   // Decided before judging, so that a frame the cache will skip does not
   // push the oldest one out (and is judged against all of them).
   const bool caches = cachesFrameAt(scan.stamp);
-  if (caches) expireFrames(scan.stamp, true);
+  if (caches) makeRoomForAFrame();
   if (evidenceWaitsForBaseline()) admitEvidence(origin);
   if (warmedUp()) {
     const Judgement judgement = alignAndJudge(scan, sensor, labels);

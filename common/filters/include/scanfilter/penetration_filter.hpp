@@ -110,9 +110,11 @@ class PenetrationFilter {
   void rescuePersistentPoints(std::span<std::uint8_t> labels);
   int evidenceAround(const Eigen::Vector2d& p) const;
   void resetOnPoseJump(const Eigen::Vector2d& origin, Stamp stamp);
-  // Drops cached frames older than T_max and, when `making_room` for the
-  // frame at `stamp`, the oldest while the cache is full.
-  void expireFrames(Stamp stamp, bool making_room);
+  void dropOldestFrame();
+  // Drops the cached frames older than T_max at `stamp`.
+  void expireFrames(Stamp stamp);
+  // Drops the oldest frames while the cache is full (max_cache_frames).
+  void makeRoomForAFrame();
   // Whether a frame taken at `stamp` joins the cache (cache_min_interval).
   bool cachesFrameAt(Stamp stamp) const;
   void cacheFrame(const Scan& scan, const SensorInfo& sensor, const Eigen::Vector2d& origin,
