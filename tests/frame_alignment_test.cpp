@@ -44,7 +44,7 @@ PenetrationGrid cacheOf(const World& world, const SensorInfo& sensor, int frames
 
 struct Placed {
   std::vector<Eigen::Vector2d> points;
-  std::vector<bool> usable;
+  BeamMask usable;
   Eigen::Vector2d origin;
 };
 

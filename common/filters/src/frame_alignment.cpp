@@ -108,7 +108,7 @@ const Eigen::Vector2d* FrameAligner::nearestObstacle(const Eigen::Vector2d& p, d
   return found.best;
 }
 
-void FrameAligner::findNormals(std::span<const Eigen::Vector2d> points, const std::vector<bool>& usable) {
+void FrameAligner::findNormals(std::span<const Eigen::Vector2d> points, const BeamMask& usable) {
   with_normal_points_.clear();
   normals_.clear();
   for (std::size_t i = 1; i + 1 < points.size(); ++i) {
@@ -204,7 +204,7 @@ Eigen::Isometry2d FrameAligner::fit(const Eigen::Vector2d& origin) {
 }
 
 FrameAlignment FrameAligner::align(const PenetrationGrid& grid, std::span<const Eigen::Vector2d> points,
-                                   const std::vector<bool>& usable, const Eigen::Vector2d& origin) {
+                                   const BeamMask& usable, const Eigen::Vector2d& origin) {
   FrameAlignment out;
   snapshotObstacles(grid, points);
   findNormals(points, usable);

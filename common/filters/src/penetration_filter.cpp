@@ -15,18 +15,23 @@
 namespace scanfilter {
 
 namespace {
+// Relative: the fast step 2's test of a cell's distance off a beam is this
+// much looser than the rule's (which rounds its own way), so that it never
+// drops a cell the rule would count.
+constexpr double kNearBeamSlack = 1e-9;
+
 // The far side of a depth edge that counts: returns this frame keeps. Ghosts
 // behind a mirror or a pane that this frame has marked do not silence the
 // pane's own returns next to them.
-std::vector<bool> keptReturns(std::span<const std::uint8_t> labels) {
-  std::vector<bool> kept(labels.size());
+BeamMask keptReturns(std::span<const std::uint8_t> labels) {
+  BeamMask kept(labels.size());
   for (std::size_t i = 0; i < labels.size(); ++i) kept[i] = labels[i] == static_cast<std::uint8_t>(PointCode::kValid);
   return kept;
 }
 
 // Every return, kept or not (the free-space check's far side of an edge).
-std::vector<bool> allReturns(const Scan& scan) {
-  std::vector<bool> returns(scan.size());
+BeamMask allReturns(const Scan& scan) {
+  BeamMask returns(scan.size());
   for (std::size_t i = 0; i < scan.size(); ++i) returns[i] = scan.hasReturn(i);
   return returns;
 }
@@ -94,9 +99,9 @@ void PenetrationFilter::cacheFrame(const Scan& scan, const SensorInfo& sensor, c
   CachedFrame frame{scan.stamp, origin, {}, {}, evidence_now, std::nullopt};
   // Only with the switch on: every frame goes through here.
   const int edge_beams = edgeHalfWidthBeams(scan);
-  const std::vector<bool> edge =
+  const BeamMask edge =
       edge_beams > 0 ? nearSideOfDepthEdge(scan, keptReturns(labels), edge_beams, params_.edge_depth_step)
-                     : std::vector<bool>{};
+                     : BeamMask{};
   for (std::size_t i = 0; i < labels.size(); ++i) {
     const auto code = static_cast<PointCode>(labels[i]);
     if (code == PointCode::kNoReturn) continue;
@@ -254,7 +259,7 @@ void PenetrationFilter::markSeenThrough(const Scan& scan, const Eigen::Vector2d&
   const double baseline_sq = params_.rescue_min_baseline * params_.rescue_min_baseline;
   // Candidates: returns with a neighbour farther by edge_depth_step, where
   // mixed returns are. Any return counts as that neighbour, kept or not.
-  const std::vector<bool> candidate = nearSideOfDepthEdge(scan, allReturns(scan), 1, params_.edge_depth_step);
+  const BeamMask candidate = nearSideOfDepthEdge(scan, allReturns(scan), 1, params_.edge_depth_step);
   for (std::size_t i = 0; i < labels.size(); ++i) {
     if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid) || !candidate[i]) continue;
     // A return the rescue's evidence (returns of frames from elsewhere)
@@ -359,13 +364,15 @@ void FastPenetrationFilter::judgeBundle(const Eigen::Vector2d& origin, std::span
       if (walkAlone(origin, beam)) labels[beam.index] = static_cast<std::uint8_t>(PointCode::kMisdetected);
   } else {
     bundle_cells_.clear();
+    bundle_offsets_.clear();
     window_.anyAlongRay(origin, origin + band->axis * band->length, band->half_width,
-                        [this](CellIndex, const Eigen::Vector2d& q) {
+                        [this, &origin](CellIndex, const Eigen::Vector2d& q) {
                           bundle_cells_.push_back(q);
+                          bundle_offsets_.push_back(q - origin);
                           return false;
                         });
     for (const Beam& beam : bundle_)
-      if (isMisdetected(origin, beam, bundle_cells_))
+      if (isMisdetected(origin, beam))
         labels[beam.index] = static_cast<std::uint8_t>(PointCode::kMisdetected);
   }
   bundle_.clear();
@@ -380,13 +387,27 @@ bool FastPenetrationFilter::walkAlone(const Eigen::Vector2d& origin, const Beam&
                              [&](CellIndex, const Eigen::Vector2d& q) { return addBeamEvidence(origin, beam, q); });
 }
 
-bool FastPenetrationFilter::isMisdetected(const Eigen::Vector2d& origin, const Beam& beam,
-                                          std::span<const Eigen::Vector2d> cells) {
+bool FastPenetrationFilter::isMisdetected(const Eigen::Vector2d& origin, const Beam& beam) {
+  // Most of a bundle's cells lie beside this beam, off it by more than the
+  // rule's outer half width: a branch-free pass over their offsets keeps
+  // those within it (loosened by kNearBeamSlack, so that rounding can only
+  // keep more), and only they meet the whole rule.
+  const Eigen::Vector2d v = points_[beam.index] - origin;
+  const double outer = rule_.outerHalfWidth();
+  const double limit = outer * outer * v.squaredNorm() * (1.0 + kNearBeamSlack);
+  near_cells_.resize(bundle_offsets_.size());
+  std::size_t near = 0;
+  for (std::size_t k = 0; k < bundle_offsets_.size(); ++k) {
+    const Eigen::Vector2d& w = bundle_offsets_[k];
+    const double cross = v.x() * w.y() - v.y() * w.x();  // the beam's length times w's distance off it
+    near_cells_[near] = static_cast<std::uint32_t>(k);
+    near += cross * cross <= limit;
+  }
   // The evidence does not depend on the order of the cells, so testing the
   // bundle's cells in walk order gives the beam's own walk's answer.
   evidence_along_beam_.reset();
-  for (const auto& q : cells)
-    if (addBeamEvidence(origin, beam, q)) return true;
+  for (std::size_t k = 0; k < near; ++k)
+    if (addBeamEvidence(origin, beam, bundle_cells_[near_cells_[k]])) return true;
   return false;
 }
 

@@ -1,6 +1,5 @@
 #pragma once
-#include <vector>
-
+#include "scanfilter/beam_mask.hpp"
 #include "scanfilter/scan.hpp"
 
 namespace scanfilter {
@@ -14,7 +13,7 @@ namespace scanfilter {
 // many places they smear an edge outwards, and beams passing just beside it
 // then seem to cross it). The caller says what counts as background (step 2:
 // the returns it keeps).
-std::vector<bool> nearSideOfDepthEdge(const Scan& scan, const std::vector<bool>& background, int half_width_beams,
+BeamMask nearSideOfDepthEdge(const Scan& scan, const BeamMask& background, int half_width_beams,
                                       double depth_step);
 
 }  // namespace scanfilter

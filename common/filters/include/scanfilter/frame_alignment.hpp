@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "scanfilter/beam_mask.hpp"
 #include "scanfilter/cell_bitmap.hpp"
 #include "scanfilter/cell_slots.hpp"
 #include "scanfilter/penetration_grid.hpp"
@@ -72,7 +73,7 @@ class FrameAligner {
   // `points`: the frame's world points (NaN: no return); `usable[i]` false
   // for points that must not pull the fit (step 1's jump points).
   FrameAlignment align(const PenetrationGrid& grid, std::span<const Eigen::Vector2d> points,
-                       const std::vector<bool>& usable, const Eigen::Vector2d& origin);
+                       const BeamMask& usable, const Eigen::Vector2d& origin);
 
  private:
   struct Match {
@@ -98,7 +99,7 @@ class FrameAligner {
     double edge = 0.0;
   };
   BlockSearch searchBlock(const Eigen::Vector2d& p, int reach) const;
-  void findNormals(std::span<const Eigen::Vector2d> points, const std::vector<bool>& usable);
+  void findNormals(std::span<const Eigen::Vector2d> points, const BeamMask& usable);
   // Keeps max_fit_points of the points with a direction, spread evenly.
   void thinToMaxFitPoints();
   int matchPoints(const Eigen::Isometry2d& correction);

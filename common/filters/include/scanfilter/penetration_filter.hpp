@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include "scanfilter/beam_bundle.hpp"
+#include "scanfilter/beam_mask.hpp"
 #include "scanfilter/frame_alignment.hpp"
 #include "scanfilter/free_space_check.hpp"
 #include "scanfilter/implementation.hpp"
@@ -144,7 +145,7 @@ class PenetrationFilter {
   // Odometry pose -> the cache's frame: the sum of the frames' alignments
   // since the last reset.
   Eigen::Isometry2d correction_ = Eigen::Isometry2d::Identity();
-  std::vector<bool> usable_;
+  BeamMask usable_;
   std::size_t unaligned_ = 0;
 };
 
@@ -183,8 +184,9 @@ class FastPenetrationFilter final : public PenetrationFilter {
   void judgeBundle(const Eigen::Vector2d& origin, std::span<std::uint8_t> labels);
   // The beam judged by its own walk.
   bool walkAlone(const Eigen::Vector2d& origin, const Beam& beam);
-  // The beam judged against `cells`, a superset of the obstacle positions its own walk would visit.
-  bool isMisdetected(const Eigen::Vector2d& origin, const Beam& beam, std::span<const Eigen::Vector2d> cells);
+  // The beam judged against the bundle's cells, a superset of the obstacle
+  // positions its own walk would visit.
+  bool isMisdetected(const Eigen::Vector2d& origin, const Beam& beam);
   // Cell position q as evidence against the beam (the shared rule); true once
   // the beam's evidence is conclusive.
   bool addBeamEvidence(const Eigen::Vector2d& origin, const Beam& beam, const Eigen::Vector2d& q);
@@ -200,7 +202,9 @@ class FastPenetrationFilter final : public PenetrationFilter {
   ObstacleWindow window_;
   std::vector<Beam> bundle_;
   std::vector<BundledBeam> bundle_walks_;  // bundle_[k].walk, contiguous for bundleBand; filled and emptied with it
-  std::vector<Eigen::Vector2d> bundle_cells_;  // obstacle positions in the bundle's band
+  std::vector<Eigen::Vector2d> bundle_cells_;    // obstacle positions in the bundle's band
+  std::vector<Eigen::Vector2d> bundle_offsets_;  // the same minus the origin, as the rule's w = q - r
+  std::vector<std::uint32_t> near_cells_;        // isMisdetected's: those within a beam's outer half width
 };
 
 std::unique_ptr<PenetrationFilter> makePenetrationFilter(const PenetrationFilterParams& params,
