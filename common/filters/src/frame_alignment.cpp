@@ -51,8 +51,8 @@ void FrameAligner::snapshotObstacles(const PenetrationGrid& grid, std::span<cons
 
 FrameAligner::BlockSearch FrameAligner::searchBlock(const Eigen::Vector2d& p, int reach) const {
   const double max_distance = params_.max_match_distance;
-  const auto cell_x = static_cast<int>(std::floor(p.x() / cell_size_));
-  const auto cell_y = static_cast<int>(std::floor(p.y() / cell_size_));
+  const int cell_x = floorToInt(p.x() / cell_size_);
+  const int cell_y = floorToInt(p.y() / cell_size_);
   const auto cx = cell_x - lo_.x;
   const auto cy = cell_y - lo_.y;
   BlockSearch out;

@@ -9,6 +9,7 @@
 
 #include "scanfilter/cell_bitmap.hpp"
 #include "scanfilter/cell_slots.hpp"
+#include "scanfilter/floor_to_int.hpp"
 #include "scanfilter/penetration_grid.hpp"
 
 namespace scanfilter {
@@ -74,11 +75,6 @@ class ObstacleWindow {
 };
 
 namespace detail {
-// std::floor without SSE4.1 is a library call; this is two instructions.
-inline std::int32_t floorToInt(double x) {
-  const auto i = static_cast<std::int32_t>(x);
-  return i - (x < static_cast<double>(i));
-}
 // Float slack on the walk's bounds: pred re-runs the exact test on every cell
 // visited, so the walk only has to be a superset.
 inline constexpr double kBoundSlack = 1e-9;
@@ -87,7 +83,6 @@ inline constexpr double kBoundSlack = 1e-9;
 template <typename Pred>
 bool ObstacleWindow::anyAlongRay(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double half_width,
                                  Pred&& pred) const {
-  using detail::floorToInt;
   const Eigen::Vector2d d = b - a;
   const int axis = std::abs(d.x()) >= std::abs(d.y()) ? 0 : 1;  // walk the dominant axis
   const int other = 1 - axis;

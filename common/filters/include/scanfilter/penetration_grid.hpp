@@ -13,6 +13,8 @@
 
 #include <Eigen/Core>
 
+#include "scanfilter/floor_to_int.hpp"
+
 namespace scanfilter {
 
 // Integer cell coordinates of a grid anchored at the world origin.
@@ -47,8 +49,7 @@ class PenetrationGrid {
 
   double cellSize() const { return cell_size_; }
   CellIndex cellOf(const Eigen::Vector2d& p) const {
-    return {static_cast<std::int32_t>(std::floor(p.x() / cell_size_)),
-            static_cast<std::int32_t>(std::floor(p.y() / cell_size_))};
+    return {floorToInt(p.x() / cell_size_), floorToInt(p.y() / cell_size_)};
   }
   Eigen::Vector2d cellCentre(CellIndex c) const {
     return {(c.x + 0.5) * cell_size_, (c.y + 0.5) * cell_size_};
