@@ -118,7 +118,7 @@ void FrameAligner::findNormals(std::span<const Eigen::Vector2d> points, const Be
     const Eigen::Vector2d along = b - a;
     const double span = along.norm();
     if (!(span > 0.0 && span <= params_.max_neighbour_span)) continue;
-    if (distanceToLine(points[i], a, b) > params_.max_off_line) continue;
+    if (isFartherFromLineThan(points[i], a, b, params_.max_off_line)) continue;
     with_normal_points_.push_back(points[i]);
     normals_.push_back(perpendicular(along) / span);
   }

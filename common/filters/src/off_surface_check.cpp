@@ -4,19 +4,10 @@
 #include <cmath>
 
 #include "scanfilter/point_code.hpp"
+#include "scanfilter/scan_geometry.hpp"
 #include "scanfilter/wrapped_returns.hpp"
 
 namespace scanfilter {
-
-bool OffSurfaceCheck::isOffLine(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
-                                double tol) {
-  // distanceToLine(p, a, b) > tol without the square root (the same decision).
-  const Eigen::Vector2d d = b - a;
-  const double length_sq = d.squaredNorm();
-  if (length_sq == 0.0) return (p - a).squaredNorm() > tol * tol;
-  const double cross = d.x() * (p.y() - a.y()) - d.y() * (p.x() - a.x());
-  return cross * cross > tol * tol * length_sq;
-}
 
 void OffSurfaceCheck::apply(std::span<const Eigen::Vector2d> points, std::span<const double> ranges, bool full_turn,
                             std::span<const std::uint8_t> spared, std::span<std::uint8_t> labels) {
@@ -33,7 +24,8 @@ void OffSurfaceCheck::apply(std::span<const Eigen::Vector2d> points, std::span<c
     const Eigen::Vector2d* far = returns.at(i + 3 * step);
     if (!near || !mid || !far) return false;  // no line on this side: nothing to judge by
     // Most returns lie on the line: test p first, the straightness only then.
-    return isOffLine(points[static_cast<std::size_t>(i)], *mid, *near, tol) && !isOffLine(*far, *mid, *near, tol);
+    return isFartherFromLineThan(points[static_cast<std::size_t>(i)], *mid, *near, tol) &&
+           !isFartherFromLineThan(*far, *mid, *near, tol);
   };
   marked_.clear();
   for (std::int64_t i = 0; i < n; ++i) {

@@ -211,8 +211,8 @@ void PenetrationFilter::judgePoints(const Eigen::Vector2d& origin, std::span<std
   markMisdetected(origin, labels);
 }
 
-double PenetrationFilter::ownMarginSq(const Eigen::Vector2d& origin, std::size_t i) const {
-  double margin = rule_.ownMargin((points_[i] - origin).norm());
+double PenetrationFilter::ownMarginSq(const Eigen::Vector2d& origin, std::size_t i, double length) const {
+  double margin = rule_.ownMargin(length);
   if (params_.grazing_margin)
     margin = std::max(margin, std::min(grazingRun(origin, i), params_.grazing_margin_max));
   return margin * margin;
@@ -235,13 +235,10 @@ int PenetrationFilter::evidenceAround(const Eigen::Vector2d& p) const {
   const auto reach = static_cast<int>(std::ceil(params_.rescue_radius / evidence_.cellSize()));
   const double radius_sq = params_.rescue_radius * params_.rescue_radius;
   int sum = 0;
-  for (int dy = -reach; dy <= reach; ++dy) {
-    for (int dx = -reach; dx <= reach; ++dx) {
-      const CellIndex n{c.x + dx, c.y + dy};
-      const int count = evidence_.count(n);
-      if (count > 0 && (evidence_.centroid(n) - p).squaredNorm() <= radius_sq) sum += count;
-    }
-  }
+  evidence_.forEachCountedIn({c.x - reach, c.y - reach}, {c.x + reach, c.y + reach},
+                             [&](int count, const Eigen::Vector2d& centroid) {
+                               if ((centroid - p).squaredNorm() <= radius_sq) sum += count;
+                             });
   return sum;
 }
 
@@ -319,7 +316,7 @@ std::optional<FastPenetrationFilter::Beam> FastPenetrationFilter::beamOf(const E
   const Eigen::Vector2d v = points_[i] - origin;
   const double length = v.norm();
   if (!std::isfinite(length) || length <= 0.0) return std::nullopt;
-  const double own_sq = ownMarginSq(origin, i);
+  const double own_sq = ownMarginSq(origin, i, length);
   // Penetrating cells project onto the beam between the sensor and the
   // reach; the slack keeps the walk a superset whatever the rounding.
   double reach = rule_.reachAlongBeam(length, own_sq) + detail::kBoundSlack;

@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "scanfilter/off_surface_check.hpp"
+#include "scanfilter/scan_geometry.hpp"
 
 namespace scanfilter {
 
@@ -23,7 +24,7 @@ bool StraightRunJoin::insideRun(std::int64_t i) const {
   const Eigen::Vector2d along = *r - *p;
   const double cross = along.x() * q->y() - along.y() * q->x();
   if (std::abs(cross) < min_sin_to_beam_ * along.norm() * q->norm()) return false;
-  return (*q - *p).dot(*r - *q) > 0.0 && !OffSurfaceCheck::isOffLine(*q, *p, *r, offSurfaceTolerance(params_, q->norm()));
+  return (*q - *p).dot(*r - *q) > 0.0 && !isFartherFromLineThan(*q, *p, *r, offSurfaceTolerance(params_, q->norm()));
 }
 
 std::uint32_t StraightRunJoin::find(std::uint32_t c) {
@@ -45,7 +46,7 @@ void StraightRunJoin::joinRun(std::int64_t first, std::int64_t last, std::span<c
   const auto continues = [&](std::int64_t end, std::int64_t a, std::int64_t b) {
     const Eigen::Vector2d* p = returns_.at(end);
     return first < last && p &&
-           !OffSurfaceCheck::isOffLine(*p, *returns_.at(a), *returns_.at(b), offSurfaceTolerance(params_, p->norm()));
+           !isFartherFromLineThan(*p, *returns_.at(a), *returns_.at(b), offSurfaceTolerance(params_, p->norm()));
   };
   if (continues(first - 1, first, first + 1)) --first;
   if (continues(last + 1, last - 1, last)) ++last;

@@ -83,7 +83,7 @@ std::optional<Eigen::Vector2d> localSurfaceDirection(const std::vector<Eigen::Ve
   const Eigen::Vector2d& b = points[i + 1];
   if (std::isnan(a.x()) || std::isnan(b.x()) || std::isnan(points[i].x())) return std::nullopt;
   const Eigen::Vector2d chord = b - a;
-  if (chord.squaredNorm() == 0.0 || distanceToLine(points[i], a, b) > tolerance) return std::nullopt;
+  if (chord.squaredNorm() == 0.0 || isFartherFromLineThan(points[i], a, b, tolerance)) return std::nullopt;
   return chord;
 }
 

@@ -34,9 +34,6 @@ class OffSurfaceCheck {
   void apply(std::span<const Eigen::Vector2d> points, std::span<const double> ranges, bool full_turn,
              std::span<const std::uint8_t> spared, std::span<std::uint8_t> labels);
 
-  // distanceToLine(p, a, b) > tol, without a square root (the hot path).
-  static bool isOffLine(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b, double tol);
-
  private:
 
   JumpFilterParams params_;

@@ -69,8 +69,12 @@ class PenetrationFilter {
   // point are its own surface.
   virtual void markMisdetected(const Eigen::Vector2d& origin, std::span<std::uint8_t> labels) = 0;
   // Squared own-surface margin of point i seen from `origin`: the configured
-  // margin, grown for a beam grazing its surface (grazing_margin).
-  double ownMarginSq(const Eigen::Vector2d& origin, std::size_t i) const;
+  // margin, grown for a beam grazing its surface (grazing_margin). `length`
+  // is (points_[i] - origin).norm(), for a caller that has it already.
+  double ownMarginSq(const Eigen::Vector2d& origin, std::size_t i) const {
+    return ownMarginSq(origin, i, (points_[i] - origin).norm());
+  }
+  double ownMarginSq(const Eigen::Vector2d& origin, std::size_t i, double length) const;
   // How far back from point i its beam stays within straddle_half_width of
   // the surface through i's neighbours (0 when they do not make one line).
   double grazingRun(const Eigen::Vector2d& origin, std::size_t i) const;

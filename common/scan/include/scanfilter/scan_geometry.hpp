@@ -65,6 +65,17 @@ Eigen::AlignedBox2d returnBounds(std::span<const Eigen::Vector2d> points);
 // Distance of p from the line through a and b (from a when they coincide).
 double distanceToLine(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
 
+// distanceToLine(p, a, b) > tolerance, decided on squares: without its square
+// root and division, which the filters' per-beam tests cannot afford.
+inline bool isFartherFromLineThan(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                                  double tolerance) {
+  const Eigen::Vector2d d = b - a;
+  const double length_sq = d.squaredNorm();
+  if (length_sq == 0.0) return (p - a).squaredNorm() > tolerance * tolerance;
+  const double cross = d.x() * (p.y() - a.y()) - d.y() * (p.x() - a.x());
+  return cross * cross > tolerance * tolerance * length_sq;
+}
+
 // The direction of the surface at point i of a scan's points (world or sensor
 // frame, NaN where no return): the chord from its previous to its next
 // neighbour, when both are returns and point i lies within `tolerance` of
