@@ -87,19 +87,15 @@ class PenetrationGrid {
   // the tiles that exist there and, in them, only the obstacle bits.
   template <typename Fn>
   void forEachObstacleIn(CellIndex lo, CellIndex hi, Fn&& fn) const {
-    for (std::int32_t ty = lo.y >> kTileBits; ty <= hi.y >> kTileBits; ++ty) {
-      for (std::int32_t tx = lo.x >> kTileBits; tx <= hi.x >> kTileBits; ++tx) {
-        const Tile* tile = findTile(tileKey({tx * kTileSide, ty * kTileSide}));
-        if (tile == nullptr) continue;
-        for (std::size_t word = 0; word < tile->obstacles.size(); ++word) {
-          for (std::uint64_t bits = tile->obstacles[word]; bits != 0; bits &= bits - 1) {
-            const auto index = static_cast<int>(word * 64 + static_cast<std::size_t>(std::countr_zero(bits)));
-            const CellIndex c{tx * kTileSide + index % kTileSide, ty * kTileSide + index / kTileSide};
-            if (c.x >= lo.x && c.x <= hi.x && c.y >= lo.y && c.y <= hi.y) fn(c);
-          }
+    forEachTileIn(lo, hi, [&](const Tile& tile, CellIndex origin) {
+      for (std::size_t word = 0; word < tile.obstacles.size(); ++word) {
+        for (std::uint64_t bits = tile.obstacles[word]; bits != 0; bits &= bits - 1) {
+          const auto index = static_cast<int>(word * 64 + static_cast<std::size_t>(std::countr_zero(bits)));
+          const CellIndex c{origin.x + index % kTileSide, origin.y + index / kTileSide};
+          if (c.x >= lo.x && c.x <= hi.x && c.y >= lo.y && c.y <= hi.y) fn(c);
         }
       }
-    }
+    });
   }
 
   // fn(count(c), centroid(c)) for every cell c of [lo, hi] (corners
@@ -107,21 +103,17 @@ class PenetrationGrid {
   // cell, the same values.
   template <typename Fn>
   void forEachCountedIn(CellIndex lo, CellIndex hi, Fn&& fn) const {
-    for (std::int32_t ty = lo.y >> kTileBits; ty <= hi.y >> kTileBits; ++ty) {
-      for (std::int32_t tx = lo.x >> kTileBits; tx <= hi.x >> kTileBits; ++tx) {
-        const Tile* tile = findTile(tileKey({tx * kTileSide, ty * kTileSide}));
-        if (tile == nullptr) continue;
-        const std::int32_t y0 = std::max(lo.y, ty * kTileSide), y1 = std::min(hi.y, ty * kTileSide + kTileSide - 1);
-        const std::int32_t x0 = std::max(lo.x, tx * kTileSide), x1 = std::min(hi.x, tx * kTileSide + kTileSide - 1);
-        for (std::int32_t y = y0; y <= y1; ++y) {
-          for (std::int32_t x = x0; x <= x1; ++x) {
-            const std::size_t index = slot({x, y});
-            const std::uint32_t count = tile->counts[index];
-            if (count != 0) fn(static_cast<int>(count), Eigen::Vector2d(tile->sums[index] / static_cast<double>(count)));
-          }
+    forEachTileIn(lo, hi, [&](const Tile& tile, CellIndex origin) {
+      const std::int32_t y1 = std::min(hi.y, origin.y + kTileSide - 1);
+      const std::int32_t x1 = std::min(hi.x, origin.x + kTileSide - 1);
+      for (std::int32_t y = std::max(lo.y, origin.y); y <= y1; ++y) {
+        for (std::int32_t x = std::max(lo.x, origin.x); x <= x1; ++x) {
+          const std::size_t index = slot({x, y});
+          const std::uint32_t count = tile.counts[index];
+          if (count != 0) fn(static_cast<int>(count), Eigen::Vector2d(tile.sums[index] / static_cast<double>(count)));
         }
       }
-    }
+    });
   }
 
   std::size_t tileCount() const { return tiles_.size(); }
@@ -144,6 +136,16 @@ class PenetrationGrid {
     return static_cast<std::size_t>((c.y & (kTileSide - 1)) * kTileSide + (c.x & (kTileSide - 1)));
   }
   const Tile* findTile(std::uint64_t key) const;
+  // fn(tile, its first cell) for every tile that exists within lo..hi.
+  template <typename Fn>
+  void forEachTileIn(CellIndex lo, CellIndex hi, Fn&& fn) const {
+    for (std::int32_t ty = lo.y >> kTileBits; ty <= hi.y >> kTileBits; ++ty) {
+      for (std::int32_t tx = lo.x >> kTileBits; tx <= hi.x >> kTileBits; ++tx) {
+        const CellIndex origin{tx * kTileSide, ty * kTileSide};
+        if (const Tile* tile = findTile(tileKey(origin))) fn(*tile, origin);
+      }
+    }
+  }
   // sign +1 adds the run, -1 removes it.
   void change(const CellRun& run, int sign);
   // The tile holding `key`, created when a run is added to a new one.
