@@ -26,14 +26,14 @@ Scan boxBeforeAWall() {
 }
 
 BeamMask expected(std::initializer_list<int> flagged, std::size_t n) {
-  BeamMask out(n, 0);
-  for (int i : flagged) out[static_cast<std::size_t>(i)] = 1;
+  BeamMask out(n);
+  for (int i : flagged) out.set(static_cast<std::size_t>(i), true);
   return out;
 }
 
 TEST(DepthEdges, TheNearSideWithinTheMarginIsFlagged) {
   const Scan scan = boxBeforeAWall();
-  const BeamMask background(scan.size(), 1);
+  const BeamMask background(scan.size(), true);
   EXPECT_EQ(nearSideOfDepthEdge(scan, background, 1, 0.15), expected({4}, scan.size()));
   EXPECT_EQ(nearSideOfDepthEdge(scan, background, 2, 0.15), expected({3, 4}, scan.size()));
   EXPECT_EQ(nearSideOfDepthEdge(scan, background, 0, 0.15), expected({}, scan.size())) << "0: off";
@@ -42,10 +42,10 @@ TEST(DepthEdges, TheNearSideWithinTheMarginIsFlagged) {
 
 TEST(DepthEdges, AFarSideThatIsNoBackgroundOrNoReturnIsNoEdge) {
   Scan scan = boxBeforeAWall();
-  BeamMask background(scan.size(), 1);
-  for (std::size_t i = 5; i < scan.size(); ++i) background[i] = 0;  // ghosts behind a mirror
+  BeamMask background(scan.size(), true);
+  for (std::size_t i = 5; i < scan.size(); ++i) background.set(i, false);  // ghosts behind a mirror
   EXPECT_EQ(nearSideOfDepthEdge(scan, background, 2, 0.15), expected({}, scan.size()));
-  background.assign(scan.size(), 1);
+  background.assign(scan.size(), true);
   for (std::size_t i = 5; i < scan.size(); ++i) scan.ranges[i] = kNaN;
   EXPECT_EQ(nearSideOfDepthEdge(scan, background, 2, 0.15), expected({}, scan.size()));
 }
@@ -53,41 +53,47 @@ TEST(DepthEdges, AFarSideThatIsNoBackgroundOrNoReturnIsNoEdge) {
 TEST(DepthEdges, TheFarSideIsNeverFlagged) {
   Scan scan = boxBeforeAWall();
   std::reverse(scan.ranges.begin(), scan.ranges.end());  // wall first, then the box
-  const BeamMask background(scan.size(), 1);
+  const BeamMask background(scan.size(), true);
   EXPECT_EQ(nearSideOfDepthEdge(scan, background, 1, 0.15), expected({5}, scan.size()));
 }
 
 // The definition, beam by beam: the running maximum must give its answer.
-BeamMask literalNearSide(const Scan& scan, const BeamMask& background, int half_width,
-                                  double depth_step) {
+BeamMask literalNearSide(const Scan& scan, const BeamMask& background, int half_width, double depth_step) {
   const int n = static_cast<int>(scan.size());
-  BeamMask edge(scan.size(), 0);
+  BeamMask edge(scan.size());
   for (int i = 0; i < n && half_width > 0; ++i) {
     if (!scan.hasReturn(static_cast<std::size_t>(i))) continue;
     for (int j = std::max(0, i - half_width); j <= std::min(n - 1, i + half_width); ++j) {
       const auto k = static_cast<std::size_t>(j);
       if (background[k] && scan.ranges[k] > scan.ranges[static_cast<std::size_t>(i)] + depth_step)
-        edge[static_cast<std::size_t>(i)] = 1;
+        edge.set(static_cast<std::size_t>(i), true);
     }
   }
   return edge;
 }
 
 TEST(DepthEdges, AnyWidthGivesTheAnswerOfTestingEachBeamInTheWindow) {
+  // Widths on both sides of the switch from the direct maximum to the blocks
+  // (window 5), and wider than the scan; scans short and long.
+  constexpr int kMaxHalfWidth = 25;
+  constexpr int kMaxBeams = 120;
+  constexpr double kNoReturnShare = 0.05, kInfiniteShare = 0.05, kBackgroundShare = 0.8;
   std::mt19937 rng(7);
-  std::uniform_real_distribution<double> range(0.1, 8.0);
-  std::uniform_int_distribution<int> kind(0, 19);
+  std::uniform_real_distribution<double> range(0.1, 8.0), share(0.0, 1.0);
+  std::uniform_int_distribution<int> beams(1, kMaxBeams), half_widths(1, kMaxHalfWidth);
   for (int trial = 0; trial < 400; ++trial) {
     Scan scan;
     scan.angle_increment = 0.01;
-    const auto n = static_cast<std::size_t>(std::uniform_int_distribution<int>(1, 120)(rng));
+    const auto n = static_cast<std::size_t>(beams(rng));
     BeamMask background(n);
     for (std::size_t k = 0; k < n; ++k) {
-      const int what = kind(rng);  // mostly ranges; some no-returns, some infinite
-      scan.ranges.push_back(what == 0 ? kNaN : what == 1 ? std::numeric_limits<double>::infinity() : range(rng));
-      background[k] = kind(rng) < 16 ? 1 : 0;
+      const double what = share(rng);
+      scan.ranges.push_back(what < kNoReturnShare                    ? kNaN
+                            : what < kNoReturnShare + kInfiniteShare ? std::numeric_limits<double>::infinity()
+                                                                      : range(rng));
+      background.set(k, share(rng) < kBackgroundShare);
     }
-    const int half_width = std::uniform_int_distribution<int>(1, 2 * static_cast<int>(n) + 2)(rng) % 25 + 1;
+    const int half_width = half_widths(rng);
     for (const double step : {0.0, 0.15, 1.0})
       ASSERT_EQ(nearSideOfDepthEdge(scan, background, half_width, step),
                 literalNearSide(scan, background, half_width, step))

@@ -1,6 +1,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <random>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -121,6 +122,30 @@ TEST(Geometry, LocalSurfaceDirectionNeedsThreeReturnsOnOneLine) {
   EXPECT_FALSE(localSurfaceDirection(points, 0, kTolerance)) << "the first beam has one neighbour";
   EXPECT_FALSE(localSurfaceDirection(points, 5, kTolerance)) << "the last beam has one neighbour";
   EXPECT_TRUE(localSurfaceDirection(points, 2, 0.3)) << "within a looser tolerance";
+}
+
+TEST(Geometry, DistanceFromTheLineThroughTwoPoints) {
+  EXPECT_DOUBLE_EQ(distanceToLine({1, 2}, {0, 0}, {5, 0}), 2.0);
+  EXPECT_DOUBLE_EQ(distanceToLine({-4, -3}, {0, 0}, {1, 0}), 3.0) << "the line, not the segment";
+  EXPECT_DOUBLE_EQ(distanceToLine({3, 4}, {0, 0}, {0, 0}), 5.0) << "coincident points: the distance";
+  EXPECT_TRUE(isFartherFromLineThan({1, 2}, {0, 0}, {5, 0}, 1.99));
+  EXPECT_FALSE(isFartherFromLineThan({1, 2}, {0, 0}, {5, 0}, 2.01));
+  EXPECT_TRUE(isFartherFromLineThan({3, 4}, {0, 0}, {0, 0}, 4.99));
+  EXPECT_FALSE(isFartherFromLineThan({3, 4}, {0, 0}, {0, 0}, 5.01));
+  EXPECT_FALSE(isFartherFromLineThan({1, 2}, {0, 0}, {5, 0}, 2.0)) << "exactly at the tolerance: not farther";
+  // On squares it decides as the distance does wherever the two are more
+  // than a rounding error apart (within a few ulp each rounds its own way).
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> coordinate(-10.0, 10.0), tolerance(0.0, 0.5);
+  for (int k = 0; k < 100000; ++k) {
+    const Eigen::Vector2d a(coordinate(rng), coordinate(rng));
+    const Eigen::Vector2d b = a + Eigen::Vector2d(coordinate(rng), coordinate(rng)) * 0.05;
+    const Eigen::Vector2d p = (a + b) / 2 + Eigen::Vector2d(coordinate(rng), coordinate(rng)) * 0.05;
+    const double tol = tolerance(rng);
+    const double distance = distanceToLine(p, a, b);
+    if (std::abs(distance - tol) < 1e-9) continue;
+    ASSERT_EQ(isFartherFromLineThan(p, a, b, tol), distance > tol) << "case " << k;
+  }
 }
 
 }  // namespace

@@ -1,5 +1,4 @@
 #include <algorithm>
-#include <cmath>
 #include <limits>
 #include <numbers>
 
@@ -10,7 +9,6 @@
 #include "scan_builder.hpp"
 #include "scanfilter/jump_filter.hpp"
 #include "scanfilter/point_code.hpp"
-#include "scanfilter/scan_geometry.hpp"
 
 namespace scanfilter {
 namespace {
@@ -163,29 +161,6 @@ TEST(OffSurfaceCheck, KeepsCornersAndNoiseWithinTolerance) {
     if (scan.hasReturn(i)) scan.ranges[i] += (i % 2 ? 0.012 : -0.012);  // about 2σ at 2-3 m
   const auto labels = label(scan, sensor);
   EXPECT_EQ(countCode(labels, PointCode::kJump), 0u);
-}
-
-TEST(OffSurfaceCheck, DistanceFromTheLineThroughTwoPoints) {
-  EXPECT_DOUBLE_EQ(distanceToLine({1, 2}, {0, 0}, {5, 0}), 2.0);
-  EXPECT_DOUBLE_EQ(distanceToLine({-4, -3}, {0, 0}, {1, 0}), 3.0) << "the line, not the segment";
-  EXPECT_DOUBLE_EQ(distanceToLine({3, 4}, {0, 0}, {0, 0}), 5.0) << "coincident points: the distance";
-  EXPECT_TRUE(isFartherFromLineThan({1, 2}, {0, 0}, {5, 0}, 1.99));
-  EXPECT_FALSE(isFartherFromLineThan({1, 2}, {0, 0}, {5, 0}, 2.01));
-  EXPECT_TRUE(isFartherFromLineThan({3, 4}, {0, 0}, {0, 0}, 4.99));
-  EXPECT_FALSE(isFartherFromLineThan({3, 4}, {0, 0}, {0, 0}, 5.01));
-  // On squares it decides as the distance does, wherever the two are not a
-  // rounding error apart.
-  std::mt19937 rng(3);
-  std::uniform_real_distribution<double> coordinate(-10.0, 10.0), tolerance(0.0, 0.5);
-  for (int k = 0; k < 100000; ++k) {
-    const Eigen::Vector2d a(coordinate(rng), coordinate(rng));
-    const Eigen::Vector2d b = a + Eigen::Vector2d(coordinate(rng), coordinate(rng)) * 0.05;
-    const Eigen::Vector2d p = (a + b) / 2 + Eigen::Vector2d(coordinate(rng), coordinate(rng)) * 0.05;
-    const double tol = tolerance(rng);
-    const double distance = distanceToLine(p, a, b);
-    if (std::abs(distance - tol) < 1e-9) continue;
-    ASSERT_EQ(isFartherFromLineThan(p, a, b, tol), distance > tol) << "case " << k;
-  }
 }
 
 TEST(JumpClusterRule, Equation5ScalesWithRange) {

@@ -3,6 +3,7 @@
 #include <limits>
 #include <random>
 #include <span>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>

@@ -7,6 +7,7 @@
 
 #include <Eigen/Dense>
 
+#include "scanfilter/floor_to_int.hpp"
 #include "scanfilter/scan_geometry.hpp"
 
 namespace scanfilter {

@@ -15,9 +15,11 @@
 namespace scanfilter {
 
 namespace {
-// Relative: the fast step 2's test of a cell's distance off a beam is this
-// much looser than the rule's (which rounds its own way), so that it never
-// drops a cell the rule would count.
+// Relative: the fast step 2's pre-test of a cell's distance off a beam is
+// this much looser than the rule's test (c). Both compute the same
+// expressions, so in an ISO C++ build (no contraction into fused
+// multiply-adds) they agree to the bit and the slack changes nothing; it
+// keeps the pre-test a superset if a compiler rounds the two differently.
 constexpr double kNearBeamSlack = 1e-9;
 
 // The far side of a depth edge that counts: returns this frame keeps. Ghosts
@@ -25,14 +27,14 @@ constexpr double kNearBeamSlack = 1e-9;
 // pane's own returns next to them.
 BeamMask keptReturns(std::span<const std::uint8_t> labels) {
   BeamMask kept(labels.size());
-  for (std::size_t i = 0; i < labels.size(); ++i) kept[i] = labels[i] == static_cast<std::uint8_t>(PointCode::kValid);
+  for (std::size_t i = 0; i < labels.size(); ++i) kept.set(i, labels[i] == static_cast<std::uint8_t>(PointCode::kValid));
   return kept;
 }
 
 // Every return, kept or not (the free-space check's far side of an edge).
 BeamMask allReturns(const Scan& scan) {
   BeamMask returns(scan.size());
-  for (std::size_t i = 0; i < scan.size(); ++i) returns[i] = scan.hasReturn(i);
+  for (std::size_t i = 0; i < scan.size(); ++i) returns.set(i, scan.hasReturn(i));
   return returns;
 }
 }  // namespace
@@ -191,8 +193,7 @@ PenetrationFilter::Judgement PenetrationFilter::alignAndJudge(const Scan& scan, 
   Judgement out{false, correction_};
   if (params_.alignment.enabled) {
     // Step 1's jump points do not lie on surfaces: they must not pull the fit.
-    usable_.resize(labels.size());
-    for (std::size_t i = 0; i < labels.size(); ++i) usable_[i] = labels[i] == static_cast<std::uint8_t>(PointCode::kValid);
+    usable_ = keptReturns(labels);
     const FrameAlignment fit = aligner_.align(grid_, points_, usable_, origin);
     if (!fit.good) return out;  // judged against a cache it does not fit, good points would go
     for (auto& p : points_) p = fit.correction * p;
@@ -384,27 +385,33 @@ bool FastPenetrationFilter::walkAlone(const Eigen::Vector2d& origin, const Beam&
                              [&](CellIndex, const Eigen::Vector2d& q) { return addBeamEvidence(origin, beam, q); });
 }
 
-bool FastPenetrationFilter::isMisdetected(const Eigen::Vector2d& origin, const Beam& beam) {
-  // Most of a bundle's cells lie beside this beam, off it by more than the
-  // rule's outer half width: a branch-free pass over their offsets keeps
-  // those within it (loosened by kNearBeamSlack, so that rounding can only
-  // keep more), and only they meet the whole rule.
+std::size_t FastPenetrationFilter::keepCellsNearBeam(const Eigen::Vector2d& origin, const Beam& beam) {
+  // The rule's test (c), on the offsets the bundle took once, without a
+  // branch: the same expressions as PenetrationRule::evidence, the limit
+  // loosened by kNearBeamSlack.
   const Eigen::Vector2d v = points_[beam.index] - origin;
   const double outer = rule_.outerHalfWidth();
   const double limit = outer * outer * v.squaredNorm() * (1.0 + kNearBeamSlack);
-  near_cells_.resize(bundle_offsets_.size());
+  near_cell_indices_.resize(bundle_offsets_.size());
   std::size_t near = 0;
   for (std::size_t k = 0; k < bundle_offsets_.size(); ++k) {
     const Eigen::Vector2d& w = bundle_offsets_[k];
     const double cross = v.x() * w.y() - v.y() * w.x();  // the beam's length times w's distance off it
-    near_cells_[near] = static_cast<std::uint32_t>(k);
+    near_cell_indices_[near] = static_cast<std::uint32_t>(k);
     near += cross * cross <= limit;
   }
-  // The evidence does not depend on the order of the cells, so testing the
-  // bundle's cells in walk order gives the beam's own walk's answer.
+  return near;
+}
+
+bool FastPenetrationFilter::isMisdetected(const Eigen::Vector2d& origin, const Beam& beam) {
+  // Most of a bundle's cells lie beside this beam, off it by more than the
+  // rule's outer half width: they say nothing (kNone), so only the others
+  // meet the whole rule. The evidence does not depend on the order of the
+  // cells, so testing them in walk order gives the beam's own walk's answer.
+  const std::size_t near = keepCellsNearBeam(origin, beam);
   evidence_along_beam_.reset();
   for (std::size_t k = 0; k < near; ++k)
-    if (addBeamEvidence(origin, beam, bundle_cells_[near_cells_[k]])) return true;
+    if (addBeamEvidence(origin, beam, bundle_cells_[near_cell_indices_[k]])) return true;
   return false;
 }
 

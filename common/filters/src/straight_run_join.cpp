@@ -5,7 +5,6 @@
 #include <numbers>
 #include <numeric>
 
-#include "scanfilter/off_surface_check.hpp"
 #include "scanfilter/scan_geometry.hpp"
 
 namespace scanfilter {

@@ -13,7 +13,6 @@ namespace scanfilter {
 // many places they smear an edge outwards, and beams passing just beside it
 // then seem to cross it). The caller says what counts as background (step 2:
 // the returns it keeps).
-BeamMask nearSideOfDepthEdge(const Scan& scan, const BeamMask& background, int half_width_beams,
-                                      double depth_step);
+BeamMask nearSideOfDepthEdge(const Scan& scan, const BeamMask& background, int half_width_beams, double depth_step);
 
 }  // namespace scanfilter

@@ -191,6 +191,9 @@ class FastPenetrationFilter final : public PenetrationFilter {
   // The beam judged against the bundle's cells, a superset of the obstacle
   // positions its own walk would visit.
   bool isMisdetected(const Eigen::Vector2d& origin, const Beam& beam);
+  // Fills near_cell_indices_ with the bundle's cells within the rule's outer
+  // half width of the beam (a superset of those test (c) keeps); how many.
+  std::size_t keepCellsNearBeam(const Eigen::Vector2d& origin, const Beam& beam);
   // Cell position q as evidence against the beam (the shared rule); true once
   // the beam's evidence is conclusive.
   bool addBeamEvidence(const Eigen::Vector2d& origin, const Beam& beam, const Eigen::Vector2d& q);
@@ -208,7 +211,7 @@ class FastPenetrationFilter final : public PenetrationFilter {
   std::vector<BundledBeam> bundle_walks_;  // bundle_[k].walk, contiguous for bundleBand; filled and emptied with it
   std::vector<Eigen::Vector2d> bundle_cells_;    // obstacle positions in the bundle's band
   std::vector<Eigen::Vector2d> bundle_offsets_;  // the same minus the origin, as the rule's w = q - r
-  std::vector<std::uint32_t> near_cells_;        // isMisdetected's: those within a beam's outer half width
+  std::vector<std::uint32_t> near_cell_indices_;  // into bundle_cells_: keepCellsNearBeam's result
 };
 
 std::unique_ptr<PenetrationFilter> makePenetrationFilter(const PenetrationFilterParams& params,

@@ -1,4 +1,5 @@
 #pragma once
+#include <cassert>
 #include <optional>
 #include <span>
 #include <vector>
@@ -65,10 +66,14 @@ Eigen::AlignedBox2d returnBounds(std::span<const Eigen::Vector2d> points);
 // Distance of p from the line through a and b (from a when they coincide).
 double distanceToLine(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
 
-// distanceToLine(p, a, b) > tolerance, decided on squares: without its square
-// root and division, which the filters' per-beam tests cannot afford.
+// distanceToLine(p, a, b) > tolerance (>= 0), decided on squares: without
+// its square root and division, which the filters' per-beam tests cannot
+// afford. The two can disagree only where the distance is within a few ulp
+// of the tolerance (each rounds its own way); there this one is the nearer
+// to the exact answer.
 inline bool isFartherFromLineThan(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                                   double tolerance) {
+  assert(tolerance >= 0.0);
   const Eigen::Vector2d d = b - a;
   const double length_sq = d.squaredNorm();
   if (length_sq == 0.0) return (p - a).squaredNorm() > tolerance * tolerance;
