@@ -537,6 +537,40 @@ TEST(PenetrationRule, LiteralStepsBtoE) {
   EXPECT_EQ(rule.evidence(r, point, {1, -0.05}, own), PenetrationRule::kRight | PenetrationRule::kOnBeam);
 }
 
+TEST(PenetrationRule, TheNearBeamPreTestKeepsEveryCellTheRuleCounts) {
+  // The fast step 2 tests only the cells nearBeam keeps: it must keep every
+  // one evidence() counts, at the edge of the outer half width too.
+  PenetrationFilterParams p;
+  p.straddle_half_width = 0.125;  // binary: the edge cases below are exact
+  const PenetrationRule rule(p);
+  ASSERT_EQ(rule.outerHalfWidth(), 0.125);
+  const Eigen::Vector2d r(0, 0), point(4, 0), v = point - r;
+  const double own = rule.ownMarginSq(4.0);
+  for (const double off : {0.125, -0.125}) {
+    const Eigen::Vector2d q(2, off);  // exactly the outer half width off the beam
+    ASSERT_NE(rule.evidence(r, point, q, own), PenetrationRule::kNone) << "the rule counts the edge";
+    EXPECT_TRUE(PenetrationRule::nearBeam(v, q - r, rule.nearBeamLimit(v))) << "off " << off;
+  }
+  EXPECT_FALSE(PenetrationRule::nearBeam(v, Eigen::Vector2d(2, 0.1251), rule.nearBeamLimit(v))) << "beyond it";
+  // And anywhere: random beams and cells, whatever the rounding.
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> coordinate(-6.0, 6.0), off_beam(-0.2, 0.2), along(-0.5, 1.5);
+  int counted = 0;
+  for (int k = 0; k < 200000; ++k) {
+    const Eigen::Vector2d sensor(coordinate(rng), coordinate(rng));
+    const Eigen::Vector2d end = sensor + Eigen::Vector2d(coordinate(rng), coordinate(rng));
+    const Eigen::Vector2d beam = end - sensor;
+    if (beam.norm() < 0.1) continue;
+    const Eigen::Vector2d normal = Eigen::Vector2d(-beam.y(), beam.x()).normalized();
+    const Eigen::Vector2d q = sensor + beam * along(rng) + normal * off_beam(rng);
+    const double own_sq = rule.ownMarginSq(beam.norm());
+    if (rule.evidence(sensor, end, q, own_sq) == PenetrationRule::kNone) continue;
+    ++counted;
+    ASSERT_TRUE(PenetrationRule::nearBeam(beam, q - sensor, rule.nearBeamLimit(beam))) << "case " << k;
+  }
+  EXPECT_GT(counted, 10000) << "the random cases reach the rule";
+}
+
 TEST(PenetrationRule, OwnSurfaceMarginProtectsThePointsWall) {
   PenetrationFilterParams p;
   p.own_surface_margin = 0.15;

@@ -15,13 +15,6 @@
 namespace scanfilter {
 
 namespace {
-// Relative: the fast step 2's pre-test of a cell's distance off a beam is
-// this much looser than the rule's test (c). Both compute the same
-// expressions, so in an ISO C++ build (no contraction into fused
-// multiply-adds) they agree to the bit and the slack changes nothing; it
-// keeps the pre-test a superset if a compiler rounds the two differently.
-constexpr double kNearBeamSlack = 1e-9;
-
 // The far side of a depth edge that counts: returns this frame keeps. Ghosts
 // behind a mirror or a pane that this frame has marked do not silence the
 // pane's own returns next to them.
@@ -386,19 +379,15 @@ bool FastPenetrationFilter::walkAlone(const Eigen::Vector2d& origin, const Beam&
 }
 
 std::size_t FastPenetrationFilter::keepCellsNearBeam(const Eigen::Vector2d& origin, const Beam& beam) {
-  // The rule's test (c), on the offsets the bundle took once, without a
-  // branch: the same expressions as PenetrationRule::evidence, the limit
-  // loosened by kNearBeamSlack.
+  // The rule's test (c) on the offsets the bundle took once, without a
+  // branch: every index is written, the count moves on only for those kept.
   const Eigen::Vector2d v = points_[beam.index] - origin;
-  const double outer = rule_.outerHalfWidth();
-  const double limit = outer * outer * v.squaredNorm() * (1.0 + kNearBeamSlack);
+  const double limit = rule_.nearBeamLimit(v);
   near_cell_indices_.resize(bundle_offsets_.size());
   std::size_t near = 0;
   for (std::size_t k = 0; k < bundle_offsets_.size(); ++k) {
-    const Eigen::Vector2d& w = bundle_offsets_[k];
-    const double cross = v.x() * w.y() - v.y() * w.x();  // the beam's length times w's distance off it
     near_cell_indices_[near] = static_cast<std::uint32_t>(k);
-    near += cross * cross <= limit;
+    near += PenetrationRule::nearBeam(v, bundle_offsets_[k], limit);
   }
   return near;
 }

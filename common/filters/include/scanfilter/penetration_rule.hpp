@@ -53,6 +53,20 @@ class PenetrationRule {
     return bits;
   }
 
+  // Test (c) alone, for many cells against one beam (the fast step 2): the
+  // beam's limit once, then one cross product a cell, no branch. Loosened by
+  // kNearBeamSlack, so that it holds for every q evidence() counts whatever
+  // the rounding: both compute the same expressions, and in an ISO C++ build
+  // (no contraction into fused multiply-adds) agree to the bit anyway.
+  static constexpr double kNearBeamSlack = 1e-9;  // relative
+  double nearBeamLimit(const Eigen::Vector2d& v) const {  // v = p - r
+    return outer_ * outer_ * v.squaredNorm() * (1.0 + kNearBeamSlack);
+  }
+  static bool nearBeam(const Eigen::Vector2d& v, const Eigen::Vector2d& w, double limit) {  // w = q - r
+    const double cross = v.x() * w.y() - v.y() * w.x();  // |v| times q's distance off the beam
+    return cross * cross <= limit;
+  }
+
   bool requiresBothSides() const { return require_both_sides_; }
 
   // How far off the beam and beyond its point evidence can lie: the beam
