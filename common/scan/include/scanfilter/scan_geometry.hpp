@@ -69,8 +69,7 @@ double distanceToLine(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const 
 // distanceToLine(p, a, b) > tolerance (>= 0), decided on squares: without
 // its square root and division, which the filters' per-beam tests cannot
 // afford. The two can disagree only where the distance is within a few ulp
-// of the tolerance (each rounds its own way); there this one is the nearer
-// to the exact answer.
+// of the tolerance: each rounds its own way.
 inline bool isFartherFromLineThan(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                                   double tolerance) {
   assert(tolerance >= 0.0);
