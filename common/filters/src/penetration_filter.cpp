@@ -15,9 +15,10 @@
 namespace scanfilter {
 
 namespace {
-// The far side of a depth edge that counts: returns this frame keeps. Ghosts
-// behind a mirror or a pane that this frame has marked do not silence the
-// pane's own returns next to them.
+// The returns this frame keeps so far: the ones that pull the alignment's fit
+// (step 1's jump points lie on no surface), and the far side of a depth edge
+// that counts (ghosts behind a mirror or a pane that this frame has marked
+// do not silence the pane's own returns next to them).
 BeamMask keptReturns(std::span<const std::uint8_t> labels) {
   BeamMask kept(labels.size());
   for (std::size_t i = 0; i < labels.size(); ++i) kept.set(i, labels[i] == static_cast<std::uint8_t>(PointCode::kValid));
@@ -185,9 +186,7 @@ PenetrationFilter::Judgement PenetrationFilter::alignAndJudge(const Scan& scan, 
   Eigen::Vector2d origin = placeFrame(scan, sensor);
   Judgement out{false, correction_};
   if (params_.alignment.enabled) {
-    // Step 1's jump points do not lie on surfaces: they must not pull the fit.
-    usable_ = keptReturns(labels);
-    const FrameAlignment fit = aligner_.align(grid_, points_, usable_, origin);
+    const FrameAlignment fit = aligner_.align(grid_, points_, keptReturns(labels), origin);
     if (!fit.good) return out;  // judged against a cache it does not fit, good points would go
     for (auto& p : points_) p = fit.correction * p;
     origin = fit.correction * origin;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scanfilter/scan_geometry.hpp"
+
 namespace scanfilter {
 
 namespace {
@@ -18,8 +20,6 @@ constexpr double kMadToSigma = 1.4826;
 const double kResidualPerSigma = std::sqrt(1.5);
 // Quarter-octave thresholds of a mantissa in [1, 2): 2^0.25, 2^0.5, 2^0.75.
 constexpr double kQuarterOctaves[] = {1.189207115002721, 1.414213562373095, 1.681792830507429};
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 }  // namespace
 
 RangeNoiseEstimate::RangeNoiseEstimate(const JumpFilterParams& params)

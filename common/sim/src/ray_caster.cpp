@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "scanfilter/scan_geometry.hpp"
+
 namespace scanfilter::sim {
 
 namespace {
@@ -12,8 +14,6 @@ namespace {
 constexpr double kSamePointTolerance = 1e-6;
 constexpr double kStraightCos = 0.94;  // about 20°
 constexpr double kParallelTolerance = 1e-12;
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 }  // namespace
 
 RayCaster::RayCaster(const Scene& scene) : scene_(scene) {

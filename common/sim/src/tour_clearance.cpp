@@ -4,11 +4,11 @@
 #include <iomanip>
 #include <sstream>
 
+#include "scanfilter/scan_geometry.hpp"
+
 namespace scanfilter::sim {
 
 namespace {
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 double distanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   const Eigen::Vector2d d = b - a;

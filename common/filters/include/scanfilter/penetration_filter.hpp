@@ -149,7 +149,6 @@ class PenetrationFilter {
   // Odometry pose -> the cache's frame: the sum of the frames' alignments
   // since the last reset.
   Eigen::Isometry2d correction_ = Eigen::Isometry2d::Identity();
-  BeamMask usable_;
   std::size_t unaligned_ = 0;
 };
 

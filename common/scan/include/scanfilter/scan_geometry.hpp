@@ -63,6 +63,10 @@ void worldPoints(const Scan& scan, const SensorInfo& sensor, std::vector<Eigen::
 // empty when there is none.
 Eigen::AlignedBox2d returnBounds(std::span<const Eigen::Vector2d> points);
 
+// a.x·b.y - a.y·b.x: the z of the cross product of two vectors of the plane
+// (|a|·|b|·sin of the angle from a to b).
+inline double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
 // Distance of p from the line through a and b (from a when they coincide).
 double distanceToLine(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
 
@@ -76,8 +80,8 @@ inline bool isFartherFromLineThan(const Eigen::Vector2d& p, const Eigen::Vector2
   const Eigen::Vector2d d = b - a;
   const double length_sq = d.squaredNorm();
   if (length_sq == 0.0) return (p - a).squaredNorm() > tolerance * tolerance;
-  const double cross = d.x() * (p.y() - a.y()) - d.y() * (p.x() - a.x());
-  return cross * cross > tolerance * tolerance * length_sq;
+  const double off = cross(d, p - a);  // |d| times p's distance from the line
+  return off * off > tolerance * tolerance * length_sq;
 }
 
 // The direction of the surface at point i of a scan's points (world or sensor
