@@ -61,5 +61,28 @@ TEST(ObstacleWindow, ARebuiltWindowHoldsOnlyItsOwnFramesObstacles) {
   expectWindowMatchesGrid(window, moved, {-10, -10}, {80, 40});
 }
 
+TEST(ObstacleWindow, AnErasedCellIsNoLongerMetByAWalk) {
+  PenetrationGrid grid(0.05, 0);
+  for (int k = 0; k < 3; ++k) grid.add(Eigen::Vector2d(1.0 + 0.05 * k + 0.025, 0.025));  // cells (20..22, 0)
+  ObstacleWindow window;
+  window.build(grid, {-5, -5}, {40, 10}, [&grid](CellIndex c) { return grid.cellCentre(c); });
+  const auto met = [&window] {
+    std::vector<std::int32_t> xs;
+    window.anyAlongRay(Eigen::Vector2d(0.0, 0.025), Eigen::Vector2d(1.9, 0.025), 0.01,
+                       [&xs](CellIndex c, const Eigen::Vector2d&) {
+                         xs.push_back(c.x);
+                         return false;
+                       });
+    return xs;
+  };
+  EXPECT_EQ(met(), (std::vector<std::int32_t>{20, 21, 22}));
+  window.erase({21, 0});
+  window.erase({30, 0});  // not an obstacle: nothing happens
+  window.erase({90, 0});  // outside the window: nothing happens
+  EXPECT_FALSE(window.isObstacle({21, 0}));
+  EXPECT_TRUE(window.isObstacle({20, 0}));
+  EXPECT_EQ(met(), (std::vector<std::int32_t>{20, 22}));
+}
+
 }  // namespace
 }  // namespace scanfilter

@@ -150,6 +150,16 @@ Scan withMixedReturnsBelowTheBoard(const World& world, const Pose2& pose, const 
   return scan;
 }
 
+// From below and to the left of the board: the pose of the frame judged,
+// and its beam passing 4 cm under the board's end to the far wall.
+const Pose2 kBelowTheBoard{0.3, -0.2, 0.0};
+std::size_t beamUnderTheBoardsEnd(const Scan& scan, const SensorInfo& sensor) {
+  const Eigen::Vector2d under_the_end = Eigen::Vector2d(1.5, 0.26) - sensorOrigin(kBelowTheBoard, sensor.mount);
+  const std::size_t beam = test::beamTowards(scan, sensor, std::atan2(under_the_end.y(), under_the_end.x()));
+  EXPECT_GT(scan.ranges[beam], 2.0) << "the beam reaches the far wall";
+  return beam;
+}
+
 TEST(PenetrationFilter, ReturnsAtADepthEdgeDoNotVoteWhenAsked) {
   const SensorInfo sensor = test::simpleSensor();
   World world = kRoom;
@@ -157,21 +167,61 @@ TEST(PenetrationFilter, ReturnsAtADepthEdgeDoNotVoteWhenAsked) {
   for (double margin : {0.0, 2.0}) {
     PenetrationFilterParams p;
     p.edge_vote_margin_deg = margin;
+    p.edge_smear_radius = 0.0;  // which would keep the beam too (the next test)
     BothFilters filters(p);
     for (int k = 0; k < 10; ++k)
       filters.apply(withMixedReturnsBelowTheBoard(world, {0.02 * k, 0.0, 0.0}, sensor, 0.1 * k), sensor);
-    // From below and to the left, a clean beam just under the board's end to the far wall.
-    const Pose2 pose{0.3, -0.2, 0.0};
-    const Scan scan = castScan(world, pose, sensor, 360, 1.0);
-    const Eigen::Vector2d under_the_end = Eigen::Vector2d(1.5, 0.26) - sensorOrigin(pose, sensor.mount);
-    const std::size_t beam = test::beamTowards(scan, sensor, std::atan2(under_the_end.y(), under_the_end.x()));
-    ASSERT_GT(scan.ranges[beam], 2.0) << "the beam reaches the far wall";
+    const Scan scan = castScan(world, kBelowTheBoard, sensor, 360, 1.0);
+    const std::size_t beam = beamUnderTheBoardsEnd(scan, sensor);
     const auto labels = filters.apply(scan, sensor);
     if (margin == 0.0)
       EXPECT_EQ(labels[beam], kMisdetected) << "the smeared end is taken for a surface the beam crosses";
     else
       EXPECT_EQ(labels[beam], kValid) << "the mixed returns did not vote";
   }
+}
+
+// The board of the test above, its end smeared by mixed returns in the
+// cache, and a beam passing 4 cm beside the end. The frame judged sees the
+// board end there (a return with the far wall beyond it on one side, the
+// board running on on the other), so the cells within edge_smear_radius of
+// that end are its fringe.
+std::vector<std::uint8_t> beamBesideASmearedEnd(double smear_radius, std::size_t& beam) {
+  const SensorInfo sensor = test::simpleSensor();
+  World world = kRoom;
+  world.wall({1.5, 0.3}, {1.5, 1.5});
+  PenetrationFilterParams p;
+  p.edge_smear_radius = smear_radius;
+  BothFilters filters(p);
+  for (int k = 0; k < 10; ++k)
+    filters.apply(withMixedReturnsBelowTheBoard(world, {0.02 * k, 0.0, 0.0}, sensor, 0.1 * k), sensor);
+  const Scan scan = castScan(world, kBelowTheBoard, sensor, 360, 1.0);
+  beam = beamUnderTheBoardsEnd(scan, sensor);
+  return filters.apply(scan, sensor);
+}
+
+TEST(PenetrationFilter, AFringeBesideASurfaceEndTheFrameSeesIsNoEvidence) {
+  std::size_t beam = 0;
+  EXPECT_EQ(beamBesideASmearedEnd(0.0, beam)[beam], kMisdetected) << "off: the fringe is taken for the board";
+  EXPECT_EQ(beamBesideASmearedEnd(0.15, beam)[beam], kValid) << "on: the frame sees the board end there";
+  EXPECT_EQ(beamBesideASmearedEnd(0.02, beam)[beam], kMisdetected) << "the fringe reaches past 2 cm";
+}
+
+TEST(PenetrationFilter, ASurfaceTheCacheHoldsOnBeyondTheEndIsStillEvidence) {
+  // A board of glass below y = 0.3: the cached frames saw all of it (down
+  // to y = -0.6), the frame judged sees only its upper part, and a beam
+  // 4 cm below that part's end goes through the glass to the far wall.
+  const SensorInfo sensor = test::simpleSensor();
+  World seen_whole = kRoom, seen_in_part = kRoom;
+  seen_whole.wall({1.5, -0.6}, {1.5, 1.5});
+  seen_in_part.wall({1.5, 0.3}, {1.5, 1.5});
+  PenetrationFilterParams p;
+  ASSERT_GT(p.edge_smear_radius, 0.0) << "on by default";
+  BothFilters filters(p);
+  for (int k = 0; k < 10; ++k) filters.apply(castScan(seen_whole, {0.02 * k, 0.0, 0.0}, sensor, 360, 0.1 * k), sensor);
+  const Scan scan = castScan(seen_in_part, kBelowTheBoard, sensor, 360, 1.0);
+  const std::size_t beam = beamUnderTheBoardsEnd(scan, sensor);  // through the glass
+  EXPECT_EQ(filters.apply(scan, sensor)[beam], kMisdetected);
 }
 
 TEST(PenetrationFilter, OldFramesExpireAfterTMax) {
@@ -493,6 +543,25 @@ TEST(PenetrationGrid, EveryCountedCellOfABlockGivesItsCountAndCentroid) {
       EXPECT_EQ(got[k].first, expected[k].first);
       EXPECT_EQ(got[k].second, expected[k].second) << "bit for bit";
     }
+  }
+}
+
+TEST(PenetrationGrid, AnyObstacleInABlockAgreesWithItsCells) {
+  PenetrationGrid grid(0.05, 2);  // three points make an obstacle
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> coordinate(-2.0, 2.0);
+  for (int k = 0; k < 1500; ++k) {
+    const Eigen::Vector2d p(coordinate(rng), coordinate(rng));
+    for (int copies = 0; copies < 1 + k % 4; ++copies) grid.add(p);  // some cells obstacles, some not
+  }
+  std::uniform_int_distribution<int> corner(-45, 40), side(0, 4);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const CellIndex lo{corner(rng), corner(rng)};
+    const CellIndex hi{lo.x + side(rng), lo.y + side(rng)};
+    bool expected = false;
+    for (std::int32_t y = lo.y; y <= hi.y; ++y)
+      for (std::int32_t x = lo.x; x <= hi.x; ++x) expected = expected || grid.count({x, y}) > 2;
+    ASSERT_EQ(grid.anyObstacleIn(lo, hi), expected) << "trial " << trial;
   }
 }
 

@@ -28,4 +28,12 @@ void ObstacleWindow::mark(CellIndex c, const Eigen::Vector2d& position) {
           static_cast<std::size_t>((c.x >> kBlockBits) - block_lo_.x)] = 1;
 }
 
+void ObstacleWindow::erase(CellIndex c) {
+  if (!isObstacle(c)) return;
+  cells_.set(static_cast<std::size_t>(c.y - lo_.y) * width_ + static_cast<std::size_t>(c.x - lo_.x),
+             CellSlots::kNone);
+  rows_.clear(c.x - lo_.x, c.y - lo_.y);
+  columns_.clear(c.y - lo_.y, c.x - lo_.x);
+}
+
 }  // namespace scanfilter

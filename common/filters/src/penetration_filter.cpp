@@ -192,10 +192,55 @@ PenetrationFilter::Judgement PenetrationFilter::alignAndJudge(const Scan& scan, 
     origin = fit.correction * origin;
     out.correction = fit.correction * correction_;
   }
+  findSurfaceEnds(scan);
   judgePoints(origin, labels);
   if (params_.free_space_check) markSeenThrough(scan, origin, labels);
   out.judged = true;
   return out;
+}
+
+void PenetrationFilter::findSurfaceEnds(const Scan& scan) {
+  surface_ends_.clear();
+  if (params_.edge_smear_radius > 0.0) {
+    for (std::size_t i = 0; i < scan.size(); ++i) {
+      // NaN (no return) compares false either side: it is no neighbour
+      // beyond, and a beam without a return ends nothing.
+      const double beyond = scan.ranges[i] + params_.edge_depth_step;
+      const bool before = i > 0 && scan.ranges[i - 1] > beyond;
+      const bool after = i + 1 < scan.size() && scan.ranges[i + 1] > beyond;
+      // Farther returns on both sides: no end of anything the frame sees
+      // (a pane or a mirror seen in one beam, a leg).
+      if (before == after) continue;
+      const std::optional<Eigen::Vector2d> inside = surfaceBehind(scan, i, before ? 1 : -1);
+      if (inside && cacheEndsToo(points_[i], *inside)) surface_ends_.push_back(points_[i]);
+    }
+  }
+  smear_zone_.build(surface_ends_, params_.edge_smear_radius);
+}
+
+std::optional<Eigen::Vector2d> PenetrationFilter::surfaceBehind(const Scan& scan, std::size_t i,
+                                                                std::ptrdiff_t step) const {
+  const double reach_sq = params_.edge_smear_radius * params_.edge_smear_radius;
+  const double gap_sq = params_.edge_depth_step * params_.edge_depth_step;
+  const auto n = static_cast<std::ptrdiff_t>(scan.size());
+  for (auto j = static_cast<std::ptrdiff_t>(i) + step, k = static_cast<std::ptrdiff_t>(i); j >= 0 && j < n;
+       k = j, j += step) {
+    if (!scan.hasReturn(static_cast<std::size_t>(j))) return std::nullopt;
+    const Eigen::Vector2d& pj = points_[static_cast<std::size_t>(j)];
+    if ((pj - points_[static_cast<std::size_t>(k)]).squaredNorm() > gap_sq) return std::nullopt;
+    if ((pj - points_[i]).squaredNorm() >= reach_sq) return pj;
+  }
+  return std::nullopt;
+}
+
+bool PenetrationFilter::cacheEndsToo(const Eigen::Vector2d& end, const Eigen::Vector2d& inside) const {
+  // A pane or a mirror the frame sees only in places also "ends" where the
+  // frame stops seeing it, but the cache holds it on beyond: look along the
+  // surface past the fringe's reach for any obstacle cell.
+  const Eigen::Vector2d outward = (end - inside).normalized();
+  const double cell = grid_.cellSize();
+  const CellIndex c = grid_.cellOf(end + outward * (params_.edge_smear_radius + 2.0 * cell));
+  return !grid_.anyObstacleIn({c.x - 1, c.y - 1}, {c.x + 1, c.y + 1});
 }
 
 void PenetrationFilter::judgePoints(const Eigen::Vector2d& origin, std::span<std::uint8_t> labels) {
@@ -273,7 +318,10 @@ void ReferencePenetrationFilter::prepareJudging(const Eigen::Vector2d& /*origin*
   // Step 6: cells counting more than obs_th points are the obstacle set Q.
   obstacles_.clear();
   grid_.forEachCellAbove(params_.obstacle_threshold,
-                         [this](CellIndex c, int) { obstacles_.push_back(obstaclePosition(c)); });
+                         [this](CellIndex c, int) {
+                           const Eigen::Vector2d q = obstaclePosition(c);
+                           if (countsAsObstacle(q)) obstacles_.push_back(q);
+                         });
 }
 
 void ReferencePenetrationFilter::markMisdetected(const Eigen::Vector2d& origin, std::span<std::uint8_t> labels) {
@@ -302,6 +350,19 @@ void FastPenetrationFilter::prepareJudging(const Eigen::Vector2d& origin) {
   const double reach = rule_.outerHalfWidth() + positionSlack() + rule_.behindMargin() + grid_.cellSize();
   window_.build(grid_, grid_.cellOf(box.min().array() - reach), grid_.cellOf(box.max().array() + reach),
                 [this](CellIndex c) { return obstaclePosition(c); });
+  eraseEdgeFringes();
+}
+
+void FastPenetrationFilter::eraseEdgeFringes() {
+  // From the ends rather than from every cell: a frame has few ends, and
+  // each reaches a few cells.
+  const double radius = params_.edge_smear_radius;
+  const double reach = radius + positionSlack();
+  for (const Eigen::Vector2d& end : surfaceEnds()) {
+    grid_.forEachObstacleIn(grid_.cellOf(end.array() - reach), grid_.cellOf(end.array() + reach), [&](CellIndex c) {
+      if ((obstaclePosition(c) - end).squaredNorm() <= radius * radius) window_.erase(c);
+    });
+  }
 }
 
 std::optional<FastPenetrationFilter::Beam> FastPenetrationFilter::beamOf(const Eigen::Vector2d& origin,

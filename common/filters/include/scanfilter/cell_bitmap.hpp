@@ -24,6 +24,11 @@ class CellBitmap {
            static_cast<std::size_t>(x / kBitsPerWord)] |= std::uint64_t{1} << (x % kBitsPerWord);
   }
 
+  void clear(int x, int row) {
+    words_[static_cast<std::size_t>(row) * static_cast<std::size_t>(words_per_row_) +
+           static_cast<std::size_t>(x / kBitsPerWord)] &= ~(std::uint64_t{1} << (x % kBitsPerWord));
+  }
+
   // Bits x0 .. x0 + count - 1 of `row`, lowest first (0 <= x0, 1 <= count
   // <= kMaxRun, x0 + count <= width).
   std::uint64_t run(int row, int x0, int count) const {

@@ -35,6 +35,10 @@ class ObstacleWindow {
     resize(lo, hi);
     grid.forEachObstacleIn(lo, hi, [&](CellIndex c) { mark(c, position(c)); });
   }
+  // Takes cell c out of the snapshot (nothing if it is not in it). Its
+  // block stays flagged: the flags only let a walk skip, so a superset is
+  // safe.
+  void erase(CellIndex c);
 
   bool isObstacle(CellIndex c) const { return indexOf(c) != CellSlots::kNone; }
 

@@ -11,6 +11,7 @@
 
 #include "scanfilter/beam_bundle.hpp"
 #include "scanfilter/beam_mask.hpp"
+#include "scanfilter/edge_smear_zone.hpp"
 #include "scanfilter/frame_alignment.hpp"
 #include "scanfilter/free_space_check.hpp"
 #include "scanfilter/implementation.hpp"
@@ -83,6 +84,11 @@ class PenetrationFilter {
   Eigen::Vector2d obstaclePosition(CellIndex c) const {
     return params_.obstacle_at_centroid ? grid_.centroid(c) : grid_.cellCentre(c);
   }
+  // Whether an obstacle at q can be evidence in the frame being judged:
+  // not in the fringe of a surface end that frame sees (edge_smear_radius).
+  bool countsAsObstacle(const Eigen::Vector2d& q) const { return !smear_zone_.contains(q); }
+  // The judged frame's surface ends (edge_smear_radius; empty when off).
+  const std::vector<Eigen::Vector2d>& surfaceEnds() const { return surface_ends_; }
   // How far q can lie from its cell's centre: widens the fast walk's band.
   double positionSlack() const { return params_.obstacle_at_centroid ? grid_.cellSize() * std::sqrt(0.5) : 0.0; }
 
@@ -112,6 +118,19 @@ class PenetrationFilter {
   };
   Judgement alignAndJudge(const Scan& scan, const SensorInfo& sensor, std::span<std::uint8_t> labels);
   void judgePoints(const Eigen::Vector2d& origin, std::span<std::uint8_t> labels);
+  // The judged frame's surface ends (points_ placed as judged), when
+  // edge_smear_radius is on: returns with a neighbour beyond them by
+  // edge_depth_step on one side, their surface running on on the other,
+  // and nothing in the cache where it would go on past the end.
+  void findSurfaceEnds(const Scan& scan);
+  // The first return from i on in the direction `step` (+1 or -1) that lies
+  // edge_smear_radius from return i, when the returns up to it run
+  // unbroken (each within edge_depth_step of the last): the surface that
+  // ends at i, seen a fringe's reach inside. nullopt when it breaks first.
+  std::optional<Eigen::Vector2d> surfaceBehind(const Scan& scan, std::size_t i, std::ptrdiff_t step) const;
+  // Whether the cache holds no obstacle where the surface through `inside`
+  // and `end` would run on past the fringe's reach.
+  bool cacheEndsToo(const Eigen::Vector2d& end, const Eigen::Vector2d& inside) const;
   void rescuePersistentPoints(std::span<std::uint8_t> labels);
   int evidenceAround(const Eigen::Vector2d& p) const;
   void resetOnPoseJump(const Eigen::Vector2d& origin, Stamp stamp);
@@ -146,6 +165,8 @@ class PenetrationFilter {
   std::size_t resets_ = 0;
   FrameAligner aligner_;
   FreeSpaceCheck free_space_;
+  EdgeSmearZone smear_zone_;
+  std::vector<Eigen::Vector2d> surface_ends_;  // reused buffer for smear_zone_
   // Odometry pose -> the cache's frame: the sum of the frames' alignments
   // since the last reset.
   Eigen::Isometry2d correction_ = Eigen::Isometry2d::Identity();
@@ -180,6 +201,9 @@ class FastPenetrationFilter final : public PenetrationFilter {
     BundledBeam walk;
   };
   void prepareJudging(const Eigen::Vector2d& origin) override;
+  // Takes the fringes of the frame's surface ends out of window_
+  // (countsAsObstacle, found from the ends).
+  void eraseEdgeFringes();
   void markMisdetected(const Eigen::Vector2d& origin, std::span<std::uint8_t> labels) override;
   // The walk of point i's beam from `origin`; nullopt when no cell can be evidence.
   std::optional<Beam> beamOf(const Eigen::Vector2d& origin, std::size_t i) const;

@@ -56,6 +56,15 @@ struct PenetrationFilterParams {
   // return votes (the default: on the simulator it costs ghost recall).
   double edge_vote_margin_deg = 0.0;  // degrees
   double edge_depth_step = 0.15;      // m
+  // Beyond the paper (docs/accuracy.md, 22): where the judged frame sees a
+  // surface end (a return with a neighbour farther by edge_depth_step on one
+  // side and its surface running on unbroken for this distance on the
+  // other), the obstacle cells within this distance of it are not evidence,
+  // unless the cache holds obstacles on beyond them (a pane or mirror seen
+  // only in places): cached returns fringe a surface's end by several
+  // centimetres (footprints straddling it, pose error), and a beam just
+  // beside the end would seem to cross the surface. 0: off (the paper).
+  double edge_smear_radius = 0.15;  // m
   // Beyond the paper (docs/accuracy.md): step 1 deletes every cluster of one
   // or two beams, so a thin leg is always lost. A jump point is restored when
   // the cached frames put at least `rescue_min_count` returns in its cell:

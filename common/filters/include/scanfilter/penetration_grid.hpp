@@ -98,6 +98,23 @@ class PenetrationGrid {
     });
   }
 
+  // Whether any cell in lo..hi (inclusive) is an obstacle.
+  bool anyObstacleIn(CellIndex lo, CellIndex hi) const {
+    bool any = false;
+    forEachTileIn(lo, hi, [&](const Tile& tile, CellIndex origin) {
+      // The cells of [lo, hi] in this tile only: a probe is a few cells.
+      const std::int32_t y1 = std::min(hi.y, origin.y + kTileSide - 1);
+      const std::int32_t x1 = std::min(hi.x, origin.x + kTileSide - 1);
+      for (std::int32_t y = std::max(lo.y, origin.y); !any && y <= y1; ++y) {
+        for (std::int32_t x = std::max(lo.x, origin.x); !any && x <= x1; ++x) {
+          const std::size_t index = slot({x, y});
+          any = ((tile.obstacles[index / 64] >> (index % 64)) & 1U) != 0;
+        }
+      }
+    });
+    return any;
+  }
+
   // fn(count(c), centroid(c)) for every cell c of [lo, hi] (corners
   // included) holding points: one tile lookup per tile instead of one per
   // cell, the same values.
