@@ -1,6 +1,7 @@
 // The fast implementations must give the reference's labels exactly, on
 // random scans and on simulated ones, over a spread of parameters.
 #include <algorithm>
+#include <array>
 #include <numbers>
 #include <random>
 #include <string>
@@ -117,6 +118,10 @@ TEST(Agreement, TwoStepFilterOnSimulatedScenes) {
       p.penetration.rescue_persistent_points = variant != 1;
       p.penetration.grazing_margin = variant != 2;
       p.penetration.grazing_margin_max = 2.0 * u(rng);
+      // Surface ends' fringes (edge_smear_radius): off, small, the default and
+      // wide, with obstacles at the cell centre as well as the centroid.
+      p.penetration.edge_smear_radius = std::array{0.0, 0.02, 0.15, 0.4}[static_cast<std::size_t>(rng() % 4)];
+      p.penetration.obstacle_at_centroid = variant != 0;
       sim::ScanSimulator simulator(sim::findScene(name), 100 + static_cast<std::uint64_t>(variant));
       frames += expectAgreement(simulator, p, 120, name + " variant " + std::to_string(variant)).frames;
     }

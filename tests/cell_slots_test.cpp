@@ -61,27 +61,37 @@ TEST(ObstacleWindow, ARebuiltWindowHoldsOnlyItsOwnFramesObstacles) {
   expectWindowMatchesGrid(window, moved, {-10, -10}, {80, 40});
 }
 
-TEST(ObstacleWindow, AnErasedCellIsNoLongerMetByAWalk) {
+TEST(ObstacleWindow, AnErasedCellIsNoLongerMetByAWalkAlongEitherAxis) {
   PenetrationGrid grid(0.05, 0);
-  for (int k = 0; k < 3; ++k) grid.add(Eigen::Vector2d(1.0 + 0.05 * k + 0.025, 0.025));  // cells (20..22, 0)
+  for (int k = 0; k < 3; ++k) {
+    grid.add(Eigen::Vector2d(1.0 + 0.05 * k + 0.025, 0.025));  // cells (20..22, 0): a walk along x
+    grid.add(Eigen::Vector2d(0.025, 1.0 + 0.05 * k + 0.025));  // cells (0, 20..22): a walk along y
+  }
   ObstacleWindow window;
-  window.build(grid, {-5, -5}, {40, 10}, [&grid](CellIndex c) { return grid.cellCentre(c); });
-  const auto met = [&window] {
-    std::vector<std::int32_t> xs;
-    window.anyAlongRay(Eigen::Vector2d(0.0, 0.025), Eigen::Vector2d(1.9, 0.025), 0.01,
-                       [&xs](CellIndex c, const Eigen::Vector2d&) {
-                         xs.push_back(c.x);
-                         return false;
-                       });
-    return xs;
+  window.build(grid, {-5, -5}, {40, 40}, [&grid](CellIndex c) { return grid.cellCentre(c); });
+  // The cells a walk from the origin's cell to `to` meets, by their index along it.
+  const auto met = [&window](const Eigen::Vector2d& to, bool along_x) {
+    std::vector<std::int32_t> found;
+    window.anyAlongRay(Eigen::Vector2d(0.025, 0.025), to, 0.01, [&](CellIndex c, const Eigen::Vector2d&) {
+      found.push_back(along_x ? c.x : c.y);
+      return false;
+    });
+    return found;
   };
-  EXPECT_EQ(met(), (std::vector<std::int32_t>{20, 21, 22}));
+  const Eigen::Vector2d along_x(1.9, 0.025), along_y(0.025, 1.9);
+  EXPECT_EQ(met(along_x, true), (std::vector<std::int32_t>{20, 21, 22}));
+  EXPECT_EQ(met(along_y, false), (std::vector<std::int32_t>{20, 21, 22}));
   window.erase({21, 0});
+  window.erase({0, 22});
   window.erase({30, 0});  // not an obstacle: nothing happens
   window.erase({90, 0});  // outside the window: nothing happens
   EXPECT_FALSE(window.isObstacle({21, 0}));
   EXPECT_TRUE(window.isObstacle({20, 0}));
-  EXPECT_EQ(met(), (std::vector<std::int32_t>{20, 22}));
+  EXPECT_EQ(met(along_x, true), (std::vector<std::int32_t>{20, 22}));
+  EXPECT_EQ(met(along_y, false), (std::vector<std::int32_t>{20, 21}));
+  // Rebuilt, the window holds the grid's cells again, the erased ones too.
+  window.build(grid, {-5, -5}, {40, 40}, [&grid](CellIndex c) { return grid.cellCentre(c); });
+  expectWindowMatchesGrid(window, grid, {-5, -5}, {40, 40});
 }
 
 }  // namespace

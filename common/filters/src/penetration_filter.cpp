@@ -236,10 +236,13 @@ std::optional<Eigen::Vector2d> PenetrationFilter::surfaceBehind(const Scan& scan
 bool PenetrationFilter::cacheEndsToo(const Eigen::Vector2d& end, const Eigen::Vector2d& inside) const {
   // A pane or a mirror the frame sees only in places also "ends" where the
   // frame stops seeing it, but the cache holds it on beyond: look along the
-  // surface past the fringe's reach for any obstacle cell.
+  // surface past the fringe's reach for any obstacle cell: the probe's cell
+  // and its 8 neighbours, the probe two cells past the reach, so that the
+  // block comes no nearer the end than the reach.
+  constexpr double kProbeCellsPastReach = 2.0;
   const Eigen::Vector2d outward = (end - inside).normalized();
-  const double cell = grid_.cellSize();
-  const CellIndex c = grid_.cellOf(end + outward * (params_.edge_smear_radius + 2.0 * cell));
+  const CellIndex c =
+      grid_.cellOf(end + outward * (params_.edge_smear_radius + kProbeCellsPastReach * grid_.cellSize()));
   return !grid_.anyObstacleIn({c.x - 1, c.y - 1}, {c.x + 1, c.y + 1});
 }
 
@@ -354,13 +357,12 @@ void FastPenetrationFilter::prepareJudging(const Eigen::Vector2d& origin) {
 }
 
 void FastPenetrationFilter::eraseEdgeFringes() {
-  // From the ends rather than from every cell: a frame has few ends, and
-  // each reaches a few cells.
-  const double radius = params_.edge_smear_radius;
-  const double reach = radius + positionSlack();
+  // Only the cells around the ends are asked (a frame has few ends, each
+  // reaching a few cells), with the reference's own test.
+  const double reach = params_.edge_smear_radius + positionSlack();
   for (const Eigen::Vector2d& end : surfaceEnds()) {
     grid_.forEachObstacleIn(grid_.cellOf(end.array() - reach), grid_.cellOf(end.array() + reach), [&](CellIndex c) {
-      if ((obstaclePosition(c) - end).squaredNorm() <= radius * radius) window_.erase(c);
+      if (!countsAsObstacle(obstaclePosition(c))) window_.erase(c);
     });
   }
 }

@@ -19,15 +19,8 @@ class CellBitmap {
     words_.assign(static_cast<std::size_t>(words_per_row_) * static_cast<std::size_t>(rows), 0);
   }
 
-  void set(int x, int row) {
-    words_[static_cast<std::size_t>(row) * static_cast<std::size_t>(words_per_row_) +
-           static_cast<std::size_t>(x / kBitsPerWord)] |= std::uint64_t{1} << (x % kBitsPerWord);
-  }
-
-  void clear(int x, int row) {
-    words_[static_cast<std::size_t>(row) * static_cast<std::size_t>(words_per_row_) +
-           static_cast<std::size_t>(x / kBitsPerWord)] &= ~(std::uint64_t{1} << (x % kBitsPerWord));
-  }
+  void set(int x, int row) { wordOf(x, row) |= bitOf(x); }
+  void clear(int x, int row) { wordOf(x, row) &= ~bitOf(x); }
 
   // Bits x0 .. x0 + count - 1 of `row`, lowest first (0 <= x0, 1 <= count
   // <= kMaxRun, x0 + count <= width).
@@ -40,6 +33,12 @@ class CellBitmap {
   }
 
  private:
+  std::uint64_t& wordOf(int x, int row) {
+    return words_[static_cast<std::size_t>(row) * static_cast<std::size_t>(words_per_row_) +
+                  static_cast<std::size_t>(x / kBitsPerWord)];
+  }
+  static std::uint64_t bitOf(int x) { return std::uint64_t{1} << (x % kBitsPerWord); }
+
   int words_per_row_ = 0;
   std::vector<std::uint64_t> words_;
 };

@@ -1,6 +1,4 @@
 #pragma once
-#include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -18,51 +16,26 @@ namespace scanfilter {
 // (edge_smear_radius; docs/accuracy.md, Beyond the paper 22).
 class EdgeSmearZone {
  public:
-  // Replaces the zone: discs of `radius` around `ends`. radius <= 0 or no
-  // ends: an empty zone.
+  // Replaces the zone: discs of `radius` around `ends` (the non-finite
+  // ones left out). radius <= 0: an empty zone.
   void build(std::span<const Eigen::Vector2d> ends, double radius);
-  bool empty() const { return ends_.empty(); }
-  // Whether q lies within the radius of an end (on the circle counts).
-  bool contains(const Eigen::Vector2d& q) const {
-    return anyEndNear(q, [](const Eigen::Vector2d&) { return true; });
-  }
-  // Calls stop(end) for the ends within the radius of q (on the circle
-  // counts) until it returns true; whether it did.
-  template <typename Stop>
-  bool anyEndNear(const Eigen::Vector2d& q, Stop&& stop) const;
+  // Whether an end lies within the radius of q (on the circle counts).
+  bool contains(const Eigen::Vector2d& q) const;
 
  private:
   struct End {
     std::uint64_t bucket;
     Eigen::Vector2d position;
   };
-  // Bucket coordinates of a finite position; the zone only ever holds
-  // returns within a scanner's range, far inside int32.
-  std::int64_t bucketCoordinate(double v) const { return static_cast<std::int64_t>(std::floor(v / radius_)); }
+  // Bucket coordinate of a finite position: radius-wide squares. Clamped to
+  // int32 so that no radius or position can overflow it (positions that far
+  // apart are never within a radius anyway); the key keeps 32 bits of each.
+  std::int64_t bucketCoordinate(double v) const;
   static std::uint64_t bucketOf(std::int64_t bx, std::int64_t by) {
     return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(bx)) << 32) | static_cast<std::uint32_t>(by);
   }
   double radius_ = 0.0;
-  std::vector<End> ends_;  // sorted by bucket: buckets are radius-wide squares
+  std::vector<End> ends_;  // sorted by bucket
 };
-
-template <typename Stop>
-bool EdgeSmearZone::anyEndNear(const Eigen::Vector2d& q, Stop&& stop) const {
-  if (ends_.empty() || !q.allFinite()) return false;
-  const double radius_sq = radius_ * radius_;
-  const std::int64_t bx = bucketCoordinate(q.x());
-  const std::int64_t by = bucketCoordinate(q.y());
-  // An end within the radius lies in one of the 3 x 3 buckets around q's.
-  for (std::int64_t dx = -1; dx <= 1; ++dx) {
-    for (std::int64_t dy = -1; dy <= 1; ++dy) {
-      const std::uint64_t key = bucketOf(bx + dx, by + dy);
-      auto it = std::lower_bound(ends_.begin(), ends_.end(), key,
-                                 [](const End& e, std::uint64_t k) { return e.bucket < k; });
-      for (; it != ends_.end() && it->bucket == key; ++it)
-        if ((it->position - q).squaredNorm() <= radius_sq && stop(it->position)) return true;
-    }
-  }
-  return false;
-}
 
 }  // namespace scanfilter

@@ -51,6 +51,10 @@ class ObstacleWindow {
  private:
   void resize(CellIndex lo, CellIndex hi);
   void mark(CellIndex c, const Eigen::Vector2d& position);
+  // Offset of a cell inside the window's rectangle (c must lie in it).
+  std::size_t offsetOf(CellIndex c) const {
+    return static_cast<std::size_t>(c.y - lo_.y) * width_ + static_cast<std::size_t>(c.x - lo_.x);
+  }
   std::int32_t indexOf(CellIndex c) const {
     const auto x = static_cast<std::uint32_t>(c.x - lo_.x);
     const auto y = static_cast<std::uint32_t>(c.y - lo_.y);

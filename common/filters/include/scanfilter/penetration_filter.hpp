@@ -166,7 +166,7 @@ class PenetrationFilter {
   FrameAligner aligner_;
   FreeSpaceCheck free_space_;
   EdgeSmearZone smear_zone_;
-  std::vector<Eigen::Vector2d> surface_ends_;  // reused buffer for smear_zone_
+  std::vector<Eigen::Vector2d> surface_ends_;  // the frame's ends: smear_zone_'s, and the fast walk's to erase
   // Odometry pose -> the cache's frame: the sum of the frames' alignments
   // since the last reset.
   Eigen::Isometry2d correction_ = Eigen::Isometry2d::Identity();
