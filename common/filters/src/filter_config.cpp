@@ -108,6 +108,7 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.read("edge_vote_margin_deg", p.edge_vote_margin_deg);
   s.read("edge_depth_step", p.edge_depth_step);
   s.read("edge_smear_radius", p.edge_smear_radius);
+  s.read("grazing_vote_max_deg", p.grazing_vote_max_deg);
   s.read("rescue_persistent_points", p.rescue_persistent_points);
   s.read("rescue_min_count", p.rescue_min_count);
   s.read("rescue_radius", p.rescue_radius);
@@ -140,6 +141,7 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.requireRange("edge_vote_margin_deg", p.edge_vote_margin_deg, 0.0, 45.0, "0 <= value <= 45 (degrees; 0: off)");
   s.requireRange("edge_depth_step", p.edge_depth_step, 0.0, 10.0, "0 <= value <= 10 (m)");
   s.requireRange("edge_smear_radius", p.edge_smear_radius, 0.0, 1.0, "0 <= value <= 1 (m; 0: off)");
+  s.requireRange("grazing_vote_max_deg", p.grazing_vote_max_deg, 0.0, 45.0, "0 <= value <= 45 (degrees; 0: off)");
   s.requireRange("free_space_margin", p.free_space_margin, 0.0, 10.0, "0 <= value <= 10 (m)");
   s.requireRange("free_space_margin_per_m", p.free_space_margin_per_m, 0.0, 1.0, "0 <= value <= 1 (m per m)");
   s.requireRange("free_space_dip", p.free_space_dip, 0.0, 10.0, "0 <= value <= 10 (m)");

@@ -98,10 +98,15 @@ void PenetrationFilter::cacheFrame(const Scan& scan, const SensorInfo& sensor, c
   const BeamMask edge =
       edge_beams > 0 ? nearSideOfDepthEdge(scan, keptReturns(labels), edge_beams, params_.edge_depth_step)
                      : BeamMask{};
+  const BeamMask grazing =
+      params_.grazing_vote_max_deg > 0.0
+          ? returnsAtGrazingIncidence(points_, correction_ * origin, scan.angle_increment,
+                                      params_.grazing_vote_max_deg, params_.straddle_half_width)
+          : BeamMask{};
   for (std::size_t i = 0; i < labels.size(); ++i) {
     const auto code = static_cast<PointCode>(labels[i]);
     if (code == PointCode::kNoReturn) continue;
-    const bool at_edge = !edge.empty() && edge[i];
+    const bool at_edge = (!edge.empty() && edge[i]) || (!grazing.empty() && grazing[i]);
     const bool votes = !at_edge && (code == PointCode::kValid ||
                                     (code == PointCode::kMisdetected && params_.cache_misdetected_points));
     if (votes) grid_.appendToRuns(frame.votes, points_[i]);

@@ -65,6 +65,12 @@ struct PenetrationFilterParams {
   // centimetres (footprints straddling it, pose error), and a beam just
   // beside the end would seem to cross the surface. 0: off (the paper).
   double edge_smear_radius = 0.15;  // m
+  // Beyond the paper (grazing_returns.hpp; docs/accuracy.md, 23): returns
+  // whose beam meets their surface at less than this angle do not vote:
+  // displaced along a surface seen at grazing incidence, they fringe it, and
+  // beams running beside it seem to cross it. 0: every return votes (the
+  // default: on the simulator it costs ghost recall, as 15 does).
+  double grazing_vote_max_deg = 0.0;  // degrees
   // Beyond the paper (docs/accuracy.md): step 1 deletes every cluster of one
   // or two beams, so a thin leg is always lost. A jump point is restored when
   // the cached frames put at least `rescue_min_count` returns in its cell:
