@@ -106,8 +106,9 @@ void PenetrationFilter::cacheFrame(const Scan& scan, const SensorInfo& sensor, c
   for (std::size_t i = 0; i < labels.size(); ++i) {
     const auto code = static_cast<PointCode>(labels[i]);
     if (code == PointCode::kNoReturn) continue;
-    const bool at_edge = (!edge.empty() && edge[i]) || (!grazing.empty() && grazing[i]);
-    const bool votes = !at_edge && (code == PointCode::kValid ||
+    // At a depth edge or at grazing incidence a return lands off its surface.
+    const bool off_its_surface = (!edge.empty() && edge[i]) || (!grazing.empty() && grazing[i]);
+    const bool votes = !off_its_surface && (code == PointCode::kValid ||
                                     (code == PointCode::kMisdetected && params_.cache_misdetected_points));
     if (votes) grid_.appendToRuns(frame.votes, points_[i]);
     else if (params_.rescue_persistent_points) grid_.appendToRuns(frame.others, points_[i]);
