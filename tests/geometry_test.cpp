@@ -122,6 +122,16 @@ TEST(Geometry, LocalSurfaceDirectionNeedsThreeReturnsOnOneLine) {
   EXPECT_FALSE(localSurfaceDirection(points, 0, kTolerance)) << "the first beam has one neighbour";
   EXPECT_FALSE(localSurfaceDirection(points, 5, kTolerance)) << "the last beam has one neighbour";
   EXPECT_TRUE(localSurfaceDirection(points, 2, 0.3)) << "within a looser tolerance";
+  // Over two beams either side: point 2 between points 0 and 4 (no return),
+  // point 3 between 1 and 5 (0.5 m off their chord), point 1 too near the start.
+  const std::vector<Eigen::Vector2d> wall = {{0.0, 1.0}, {0.1, 1.0}, {0.2, 1.01}, {0.3, 1.0}, {0.4, 1.0}};
+  const auto wide = localSurfaceDirection(wall, 2, kTolerance, 2);
+  ASSERT_TRUE(wide.has_value());
+  EXPECT_NEAR(wide->x(), 0.4, 1e-12) << "the chord from point 0 to point 4";
+  EXPECT_FALSE(localSurfaceDirection(points, 2, kTolerance, 2)) << "point 4 is no return";
+  EXPECT_FALSE(localSurfaceDirection(points, 3, kTolerance, 2)) << "point 3 lies off the chord of 1 and 5";
+  EXPECT_FALSE(localSurfaceDirection(wall, 1, kTolerance, 2)) << "one beam before it, not two";
+  EXPECT_FALSE(localSurfaceDirection(wall, 2, kTolerance, 0)) << "no span, no chord";
 }
 
 TEST(Geometry, DistanceFromTheLineThroughTwoPoints) {

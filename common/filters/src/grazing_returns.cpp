@@ -17,18 +17,12 @@ BeamMask returnsAtGrazingIncidence(const std::vector<Eigen::Vector2d>& points, c
   const auto span = static_cast<std::size_t>(
       std::clamp(std::ceil(kSurfaceSpanDeg / step_deg - 1e-9), 1.0, static_cast<double>(points.size())));
   const double sin_max = std::sin(max_angle_deg * std::numbers::pi / 180.0);
-  for (std::size_t i = span; i + span < points.size(); ++i) {
-    const Eigen::Vector2d& a = points[i - span];
-    const Eigen::Vector2d& b = points[i + span];
-    const Eigen::Vector2d& p = points[i];
-    if (!a.allFinite() || !b.allFinite() || !p.allFinite() || a == b) continue;
-    if (isFartherFromLineThan(p, a, b, tolerance)) continue;  // no one surface through it
-    const Eigen::Vector2d along = (b - a).normalized();
-    const Eigen::Vector2d beam = p - sensor;
-    const double length = beam.norm();
-    if (!(length > 0.0)) continue;
-    // sin of the angle between beam and surface: |beam x along| / |beam|.
-    grazing.set(i, std::abs(cross(beam, along)) < sin_max * length);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto surface = localSurfaceDirection(points, i, tolerance, span);
+    if (!surface) continue;
+    const Eigen::Vector2d beam = points[i] - sensor;
+    // sin of the angle between beam and surface: |beam x surface| / (|beam| |surface|).
+    grazing.set(i, std::abs(cross(beam, *surface)) < sin_max * beam.norm() * surface->norm());
   }
   return grazing;
 }

@@ -21,8 +21,7 @@ bool StraightRunJoin::insideRun(std::int64_t i) const {
   // A line the beam runs along (beyond the largest incidence) is no surface
   // it could see: a trail of mixed returns between an edge and its background.
   const Eigen::Vector2d along = *r - *p;
-  const double cross = along.x() * q->y() - along.y() * q->x();
-  if (std::abs(cross) < min_sin_to_beam_ * along.norm() * q->norm()) return false;
+  if (std::abs(cross(along, *q)) < min_sin_to_beam_ * along.norm() * q->norm()) return false;
   return (*q - *p).dot(*r - *q) > 0.0 && !isFartherFromLineThan(*q, *p, *r, offSurfaceTolerance(params_, q->norm()));
 }
 

@@ -77,10 +77,10 @@ void worldPoints(const Scan& scan, const SensorInfo& sensor, std::vector<Eigen::
 }
 
 std::optional<Eigen::Vector2d> localSurfaceDirection(const std::vector<Eigen::Vector2d>& points, std::size_t i,
-                                                     double tolerance) {
-  if (i == 0 || i + 1 >= points.size()) return std::nullopt;
-  const Eigen::Vector2d& a = points[i - 1];
-  const Eigen::Vector2d& b = points[i + 1];
+                                                     double tolerance, std::size_t span) {
+  if (span == 0 || i < span || i + span >= points.size()) return std::nullopt;
+  const Eigen::Vector2d& a = points[i - span];
+  const Eigen::Vector2d& b = points[i + span];
   if (std::isnan(a.x()) || std::isnan(b.x()) || std::isnan(points[i].x())) return std::nullopt;
   const Eigen::Vector2d chord = b - a;
   if (chord.squaredNorm() == 0.0 || isFartherFromLineThan(points[i], a, b, tolerance)) return std::nullopt;

@@ -95,24 +95,15 @@ class PenetrationGrid {
           if (c.x >= lo.x && c.x <= hi.x && c.y >= lo.y && c.y <= hi.y) fn(c);
         }
       }
+      return false;
     });
   }
 
   // Whether any cell in lo..hi (inclusive) is an obstacle.
   bool anyObstacleIn(CellIndex lo, CellIndex hi) const {
-    bool any = false;
-    forEachTileIn(lo, hi, [&](const Tile& tile, CellIndex origin) {
-      // The cells of [lo, hi] in this tile only: a probe is a few cells.
-      const std::int32_t y1 = std::min(hi.y, origin.y + kTileSide - 1);
-      const std::int32_t x1 = std::min(hi.x, origin.x + kTileSide - 1);
-      for (std::int32_t y = std::max(lo.y, origin.y); !any && y <= y1; ++y) {
-        for (std::int32_t x = std::max(lo.x, origin.x); !any && x <= x1; ++x) {
-          const std::size_t index = slot({x, y});
-          any = ((tile.obstacles[index / 64] >> (index % 64)) & 1U) != 0;
-        }
-      }
+    return anySlotIn(lo, hi, [](const Tile& tile, std::size_t slot) {
+      return ((tile.obstacles[slot / 64] >> (slot % 64)) & 1U) != 0;
     });
-    return any;
   }
 
   // fn(count(c), centroid(c)) for every cell c of [lo, hi] (corners
@@ -120,16 +111,10 @@ class PenetrationGrid {
   // cell, the same values.
   template <typename Fn>
   void forEachCountedIn(CellIndex lo, CellIndex hi, Fn&& fn) const {
-    forEachTileIn(lo, hi, [&](const Tile& tile, CellIndex origin) {
-      const std::int32_t y1 = std::min(hi.y, origin.y + kTileSide - 1);
-      const std::int32_t x1 = std::min(hi.x, origin.x + kTileSide - 1);
-      for (std::int32_t y = std::max(lo.y, origin.y); y <= y1; ++y) {
-        for (std::int32_t x = std::max(lo.x, origin.x); x <= x1; ++x) {
-          const std::size_t index = slot({x, y});
-          const std::uint32_t count = tile.counts[index];
-          if (count != 0) fn(static_cast<int>(count), Eigen::Vector2d(tile.sums[index] / static_cast<double>(count)));
-        }
-      }
+    anySlotIn(lo, hi, [&](const Tile& tile, std::size_t slot) {
+      const std::uint32_t count = tile.counts[slot];
+      if (count != 0) fn(static_cast<int>(count), Eigen::Vector2d(tile.sums[slot] / static_cast<double>(count)));
+      return false;
     });
   }
 
@@ -153,15 +138,31 @@ class PenetrationGrid {
     return static_cast<std::size_t>((c.y & (kTileSide - 1)) * kTileSide + (c.x & (kTileSide - 1)));
   }
   const Tile* findTile(std::uint64_t key) const;
-  // fn(tile, its first cell) for every tile that exists within lo..hi.
-  template <typename Fn>
-  void forEachTileIn(CellIndex lo, CellIndex hi, Fn&& fn) const {
+  // stop(tile, its first cell) for every tile that exists within lo..hi,
+  // until it returns true; whether it did.
+  template <typename Stop>
+  bool forEachTileIn(CellIndex lo, CellIndex hi, Stop&& stop) const {
     for (std::int32_t ty = lo.y >> kTileBits; ty <= hi.y >> kTileBits; ++ty) {
       for (std::int32_t tx = lo.x >> kTileBits; tx <= hi.x >> kTileBits; ++tx) {
         const CellIndex origin{tx * kTileSide, ty * kTileSide};
-        if (const Tile* tile = findTile(tileKey(origin))) fn(*tile, origin);
+        const Tile* tile = findTile(tileKey(origin));
+        if (tile != nullptr && stop(*tile, origin)) return true;
       }
     }
+    return false;
+  }
+  // stop(tile, slot) for every cell of lo..hi in a tile that exists, until
+  // it returns true; whether it did.
+  template <typename Stop>
+  bool anySlotIn(CellIndex lo, CellIndex hi, Stop&& stop) const {
+    return forEachTileIn(lo, hi, [&](const Tile& tile, CellIndex origin) {
+      const std::int32_t y1 = std::min(hi.y, origin.y + kTileSide - 1);
+      const std::int32_t x1 = std::min(hi.x, origin.x + kTileSide - 1);
+      for (std::int32_t y = std::max(lo.y, origin.y); y <= y1; ++y)
+        for (std::int32_t x = std::max(lo.x, origin.x); x <= x1; ++x)
+          if (stop(tile, slot({x, y}))) return true;
+      return false;
+    });
   }
   // sign +1 adds the run, -1 removes it.
   void change(const CellRun& run, int sign);

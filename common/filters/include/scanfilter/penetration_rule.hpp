@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 
 #include "scanfilter/penetration_filter_params.hpp"
+#include "scanfilter/scan_geometry.hpp"
 
 namespace scanfilter {
 
@@ -63,8 +64,8 @@ class PenetrationRule {
     return outer_ * outer_ * v.squaredNorm() * (1.0 + kNearBeamSlack);
   }
   static bool nearBeam(const Eigen::Vector2d& v, const Eigen::Vector2d& w, double limit) {  // w = q - r
-    const double cross = v.x() * w.y() - v.y() * w.x();  // |v| times q's distance off the beam
-    return cross * cross <= limit;
+    const double off = cross(v, w);  // |v| times q's distance off the beam
+    return off * off <= limit;
   }
 
   bool requiresBothSides() const { return require_both_sides_; }

@@ -85,13 +85,14 @@ inline bool isFartherFromLineThan(const Eigen::Vector2d& p, const Eigen::Vector2
 }
 
 // The direction of the surface at point i of a scan's points (world or sensor
-// frame, NaN where no return): the chord from its previous to its next
-// neighbour, when both are returns and point i lies within `tolerance` of
-// that chord, so one surface runs through all three. Unset at the ends of the
-// scan, beside a missing return and where the three points bend (a corner, a
-// depth step, a mixed return between two surfaces).
+// frame, NaN where no return): the chord from the return `span` beams before
+// it to the one `span` beams after it (its neighbours by default), when both
+// are returns and point i lies within `tolerance` of that chord, so one
+// surface runs through all three. Unset at the ends of the scan, beside a
+// missing return and where the three points bend (a corner, a depth step, a
+// mixed return between two surfaces).
 std::optional<Eigen::Vector2d> localSurfaceDirection(const std::vector<Eigen::Vector2d>& points, std::size_t i,
-                                                     double tolerance);
+                                                     double tolerance, std::size_t span = 1);
 
 // True when the scan's beams cover a whole turn, so the first and last beams
 // are neighbours (the seam).
