@@ -13,8 +13,16 @@
 //     counted here): the penetration model cannot tell it from the surface;
 //   - other: the cells are there and far enough, yet not on both sides of
 //     the beam within surface_gap.
+// The surface-unseen returns are split once more by whether the run's valid
+// returns had hit the surface there more than obs_th times at all (the
+// cells within one cell of the crossing, true poses), and how long before:
+// within 2 or 5 times T_max, earlier, or never. That bounds what a memory of
+// surfaces longer than the cache could find (docs/accuracy.md, "Where the
+// gap is now").
 //   build/bench/misdetected_error_breakdown [--seed 2] [--sensor triangulation]
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <cstdint>
 #include <cstdio>
 #include <string>
@@ -23,6 +31,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli_checks.hpp"
+#include "surface_history.hpp"
 #include "scanfilter/filter_config.hpp"
 #include "scanfilter/point_code.hpp"
 #include "scanfilter/scan_geometry.hpp"
@@ -48,8 +57,25 @@ int cachedReturnsNear(const PenetrationGrid& grid, const Eigen::Vector2d& p) {
   return most;
 }
 
+// When the surface of a surface-unseen return had been hit more than obs_th
+// times: the windows are multiples of T_max, the cache's own lifetime.
+enum SeenBefore { kWithin2Tmax, kWithin5Tmax, kEarlier, kNever, kSeenBefore };
+constexpr const char* kSeenBeforeNames[kSeenBefore] = {"within 2 T_max", "within 5 T_max", "earlier", "never"};
+constexpr double kSeenBeforeWindows[] = {2.0, 5.0};  // in T_max
+
+SeenBefore seenBefore(const bench::SurfaceHistory& history, const Eigen::Vector2d& p, double t,
+                      const PenetrationFilterParams& pen) {
+  if (history.mostHitsNear(p, t, kSeenBeforeWindows[0] * pen.frame_lifetime) > pen.obstacle_threshold)
+    return kWithin2Tmax;
+  if (history.mostHitsNear(p, t, kSeenBeforeWindows[1] * pen.frame_lifetime) > pen.obstacle_threshold)
+    return kWithin5Tmax;
+  if (history.mostHitsNear(p, t, t + 1.0) > pen.obstacle_threshold) return kEarlier;
+  return kNever;
+}
+
 struct Counts {
   long by_reason[kReasons] = {};
+  long unseen_by_when[kSeenBefore] = {};
   long total() const {
     long n = 0;
     for (long c : by_reason) n += c;
@@ -69,18 +95,24 @@ Counts breakdown(const std::string& scene_name, const std::string& sensor, std::
   Counts counts;
   ScanRecord record;
   std::vector<std::uint8_t> labels;
+  bench::SurfaceHistory history(pen.cell_size);
+  std::optional<Stamp> first_stamp;
   while (simulator.next(record)) {
     const Scan& scan = record.scan;
     const Eigen::Vector2d origin = sensorOrigin(scan.pose, info.mount);
+    if (!first_stamp) first_stamp = scan.stamp;
+    const double t = scan.stamp.secondsSince(*first_stamp);
     // What the cache holds before this frame goes in.
     std::vector<int> near_surface(scan.size(), -1);
     std::vector<double> behind(scan.size(), 0.0);
+    std::vector<SeenBefore> seen(scan.size(), kNever);
     for (std::size_t i = 0; i < scan.size(); ++i) {
       if (scan.truth[i] != static_cast<std::uint8_t>(PointCode::kMisdetected)) continue;
       const double a = beamWorldAngle(scan, info, i);
       const auto hit = caster.cast(origin, {std::cos(a), std::sin(a)}, info.range_max);
       if (!hit) continue;
       near_surface[i] = cachedReturnsNear(filter.penetration().grid(), hit->point);
+      seen[i] = seenBefore(history, hit->point, t, pen);
       behind[i] = scan.ranges[i] - hit->range;
     }
     const std::size_t unaligned_before = filter.penetration().unalignedFrames();
@@ -94,9 +126,17 @@ Counts breakdown(const std::string& scene_name, const std::string& sensor, std::
       if (labels[i] == static_cast<std::uint8_t>(PointCode::kMisdetected)) r = kFound;
       else if (labels[i] == static_cast<std::uint8_t>(PointCode::kJump)) r = kLabelledJump;
       else if (!judged) r = kNotJudged;
-      else if (near_surface[i] <= pen.obstacle_threshold) r = kSurfaceUnseen;
+      else if (near_surface[i] <= pen.obstacle_threshold) {
+        r = kSurfaceUnseen;
+        ++counts.unseen_by_when[seen[i]];
+      }
       else if (behind[i] < pen.own_surface_margin + pen.own_surface_margin_per_m * scan.ranges[i]) r = kJustBehind;
       ++counts.by_reason[r];
+    }
+    for (std::size_t i = 0; i < scan.size(); ++i) {
+      if (scan.truth[i] != static_cast<std::uint8_t>(PointCode::kValid)) continue;
+      const double a = beamWorldAngle(scan, info, i);
+      history.add(origin + scan.ranges[i] * Eigen::Vector2d(std::cos(a), std::sin(a)), t);
     }
   }
   return counts;
@@ -117,10 +157,25 @@ int main(int argc, char** argv) {
   std::printf("\n|---|---|");
   for (int r = 0; r < kReasons; ++r) std::printf("---|");
   std::printf("\n");
+  std::vector<std::pair<std::string, Counts>> scenes;
   for (const auto& name : sim::builtinSceneNames()) {
     const Counts c = breakdown(name, sensor, seed);
     std::printf("| %s | %ld |", name.c_str(), c.total());
     for (long n : c.by_reason) std::printf(" %ld (%.0f %%) |", n, c.total() > 0 ? 100.0 * n / c.total() : 0.0);
+    std::printf("\n");
+    std::fflush(stdout);
+    scenes.emplace_back(name, c);
+  }
+  std::printf("\nsurface unseen: when the run's valid returns had hit that surface more than obs_th times\n\n");
+  std::printf("| scene | surface unseen |");
+  for (const char* name : kSeenBeforeNames) std::printf(" %s |", name);
+  std::printf("\n|---|---|");
+  for (int w = 0; w < kSeenBefore; ++w) std::printf("---|");
+  std::printf("\n");
+  for (const auto& [name, c] : scenes) {
+    const long unseen = c.by_reason[kSurfaceUnseen];
+    std::printf("| %s | %ld |", name.c_str(), unseen);
+    for (long n : c.unseen_by_when) std::printf(" %ld (%.0f %%) |", n, unseen > 0 ? 100.0 * n / unseen : 0.0);
     std::printf("\n");
   }
   return 0;
