@@ -17,14 +17,14 @@
 // returns had hit the surface there more than obs_th times at all (the
 // cells within one cell of the crossing, true poses), and how long before:
 // within 2 or 5 times T_max, earlier, or never. That bounds what a memory of
-// surfaces longer than the cache could find (docs/accuracy.md, "Where the
-// gap is now").
+// surfaces longer than the cache could find (docs/accuracy.md, "Where step
+// 2 loses, and what was tried").
 //   build/bench/misdetected_error_breakdown [--seed 2] [--sensor triangulation]
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -69,7 +69,8 @@ SeenBefore seenBefore(const bench::SurfaceHistory& history, const Eigen::Vector2
     return kWithin2Tmax;
   if (history.mostHitsNear(p, t, kSeenBeforeWindows[1] * pen.frame_lifetime) > pen.obstacle_threshold)
     return kWithin5Tmax;
-  if (history.mostHitsNear(p, t, t + 1.0) > pen.obstacle_threshold) return kEarlier;
+  const double whole_run_so_far = t + 1.0;  // a window that starts before the first scan
+  if (history.mostHitsNear(p, t, whole_run_so_far) > pen.obstacle_threshold) return kEarlier;
   return kNever;
 }
 
