@@ -11,6 +11,7 @@
 
 #include <Eigen/Core>
 
+#include "scanfilter/cell_key.hpp"
 #include "scanfilter/floor_to_int.hpp"
 
 namespace scanfilter::bench {
@@ -20,7 +21,10 @@ class SurfaceHistory {
   explicit SurfaceHistory(double cell_size) : cell_size_(cell_size) {}
 
   // Times must not decrease from one call to the next (scan order).
-  void add(const Eigen::Vector2d& p, double t) { times_[key(cellOf(p))].push_back(t); }
+  void add(const Eigen::Vector2d& p, double t) {
+    const Cell c = cellOf(p);
+    times_[cellKey(c.x, c.y)].push_back(t);
+  }
 
   // The most hits any cell within one cell of p took in [t - window, t).
   int mostHitsNear(const Eigen::Vector2d& p, double t, double window) const {
@@ -36,11 +40,8 @@ class SurfaceHistory {
     int x, y;
   };
   Cell cellOf(const Eigen::Vector2d& p) const { return {floorToInt(p.x() / cell_size_), floorToInt(p.y() / cell_size_)}; }
-  static std::uint64_t key(Cell c) {
-    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.x)) << 32) | static_cast<std::uint32_t>(c.y);
-  }
   int hitsIn(Cell c, double from, double to) const {
-    const auto it = times_.find(key(c));
+    const auto it = times_.find(cellKey(c.x, c.y));
     if (it == times_.end()) return 0;
     const std::vector<double>& times = it->second;  // sorted: added in scan order
     return static_cast<int>(std::lower_bound(times.begin(), times.end(), to) -

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -6,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "scanfilter/cell_key.hpp"
 #include "scanfilter/scan_geometry.hpp"
 
 namespace scanfilter {
@@ -157,6 +159,31 @@ TEST(Geometry, DistanceFromTheLineThroughTwoPoints) {
     ASSERT_EQ(isFartherFromLineThan(p, a, b, tol), distance > tol) << "case " << k;
   }
 }
+
+TEST(Geometry, BeamsSpanningAnAngleRoundUpWithinTheScan) {
+  const double one_degree = std::numbers::pi / 180.0;
+  EXPECT_EQ(beamsSpanning(3.0, one_degree, 360), 3u) << "a whole number of steps, up to rounding";
+  EXPECT_EQ(beamsSpanning(3.0 * (1.0 + 1e-12), one_degree, 360), 3u);
+  EXPECT_EQ(beamsSpanning(3.1, one_degree, 360), 4u) << "part of a step counts as one";
+  EXPECT_EQ(beamsSpanning(1.0, 0.1 * one_degree, 3600), 10u);
+  EXPECT_EQ(beamsSpanning(1.0, -0.1 * one_degree, 3600), 10u) << "a clockwise scan's step is negative";
+  EXPECT_EQ(beamsSpanning(0.01, one_degree, 360), 1u) << "at least one beam";
+  EXPECT_EQ(beamsSpanning(45.0, 1e-300, 360), 360u) << "at most the scan, for any step";
+}
+
+TEST(Geometry, CellKeysOfDifferentCellsDiffer) {
+  // Around the origin and at the int32 limits, where a sign or a carry
+  // could fold one coordinate into the other.
+  const std::int32_t max = std::numeric_limits<std::int32_t>::max();
+  const std::int32_t min = std::numeric_limits<std::int32_t>::min();
+  const std::vector<std::int32_t> values{min, -1, 0, 1, max};
+  std::vector<std::uint64_t> keys;
+  for (std::int32_t x : values)
+    for (std::int32_t y : values) keys.push_back(cellKey(x, y));
+  std::sort(keys.begin(), keys.end());
+  EXPECT_EQ(std::adjacent_find(keys.begin(), keys.end()), keys.end());
+}
+
 
 }  // namespace
 }  // namespace scanfilter

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scanfilter/cell_key.hpp"
+
 namespace scanfilter::baselines {
 
 namespace {
@@ -12,7 +14,7 @@ constexpr int kMaxGrey = 255;  // an 8-bit grey image
 MedianImageFilter::MedianImageFilter(const MedianImageParams& params) : params_(params) {}
 
 MedianImageFilter::CellKey MedianImageFilter::key(std::int32_t x, std::int32_t y) {
-  return (static_cast<CellKey>(static_cast<std::uint32_t>(x)) << 32) | static_cast<std::uint32_t>(y);
+  return cellKey(x, y);
 }
 
 std::int32_t MedianImageFilter::cellIndex(double coordinate) const {

@@ -1,6 +1,5 @@
 #include "scanfilter/grazing_returns.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -11,11 +10,8 @@ namespace scanfilter {
 BeamMask returnsAtGrazingIncidence(const std::vector<Eigen::Vector2d>& points, const Eigen::Vector2d& sensor,
                                    double angle_step, double max_angle_deg, double tolerance) {
   BeamMask grazing(points.size());
-  const double step_deg = std::abs(angle_step) * 180.0 / std::numbers::pi;
-  if (!(max_angle_deg > 0.0) || !(step_deg > 0.0)) return grazing;
-  // Beams either side that span kSurfaceSpanDeg, at least one, at most the scan.
-  const auto span = static_cast<std::size_t>(
-      std::clamp(std::ceil(kSurfaceSpanDeg / step_deg - 1e-9), 1.0, static_cast<double>(points.size())));
+  if (!(max_angle_deg > 0.0) || !(std::abs(angle_step) > 0.0)) return grazing;
+  const std::size_t span = beamsSpanning(kSurfaceSpanDeg, angle_step, points.size());  // beams either side
   const double sin_max = std::sin(max_angle_deg * std::numbers::pi / 180.0);
   for (std::size_t i = 0; i < points.size(); ++i) {
     const auto surface = localSurfaceDirection(points, i, tolerance, span);

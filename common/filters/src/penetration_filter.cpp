@@ -4,11 +4,11 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 #include <spdlog/spdlog.h>
 
 #include "scanfilter/depth_edges.hpp"
+#include "scanfilter/grazing_returns.hpp"
 #include "scanfilter/point_code.hpp"
 #include "scanfilter/scan_geometry.hpp"
 
@@ -168,11 +168,8 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
 }
 
 int PenetrationFilter::edgeHalfWidthBeams(const Scan& scan) const {
-  const double step_deg = std::abs(scan.angle_increment) * 180.0 / std::numbers::pi;
-  if (params_.edge_vote_margin_deg <= 0.0 || !(step_deg > 0.0)) return 0;
-  // At least one beam; at most the scan (a tiny step must not overflow the int).
-  const double beams = std::ceil(params_.edge_vote_margin_deg / step_deg - 1e-9);
-  return static_cast<int>(std::clamp(beams, 1.0, static_cast<double>(scan.size())));
+  if (params_.edge_vote_margin_deg <= 0.0 || !(std::abs(scan.angle_increment) > 0.0)) return 0;
+  return static_cast<int>(beamsSpanning(params_.edge_vote_margin_deg, scan.angle_increment, scan.size()));
 }
 
 void PenetrationFilter::judge(const Scan& scan, const SensorInfo& sensor,

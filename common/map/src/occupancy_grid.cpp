@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scanfilter/cell_key.hpp"
 #include "scanfilter/point_code.hpp"
 #include "scanfilter/scan_geometry.hpp"
 
@@ -15,8 +16,7 @@ constexpr int kRosOccupied = 100;
 constexpr int kRosUnknown = -1;
 
 std::uint64_t tileKey(CellIndex c, int bits) {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.x >> bits)) << 32) |
-         static_cast<std::uint32_t>(c.y >> bits);
+  return cellKey(c.x >> bits, c.y >> bits);
 }
 std::size_t slotOf(CellIndex c, int side) {
   return static_cast<std::size_t>((c.y & (side - 1)) * side + (c.x & (side - 1)));

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "scanfilter/cell_key.hpp"
 #include "scanfilter/scan_geometry.hpp"
 
 namespace scanfilter {
@@ -23,9 +24,7 @@ GridIndex gridIndex(const Eigen::Vector2d& p, double cell) {
   return {static_cast<std::int32_t>(std::floor(p.x() / cell)), static_cast<std::int32_t>(std::floor(p.y() / cell))};
 }
 
-std::uint64_t packed(GridIndex c) {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.x)) << 32) | static_cast<std::uint32_t>(c.y);
-}
+std::uint64_t packed(GridIndex c) { return cellKey(c.x, c.y); }
 
 int chebyshev(GridIndex a, GridIndex b) { return std::max(std::abs(a.x - b.x), std::abs(a.y - b.y)); }
 

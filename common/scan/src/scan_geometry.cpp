@@ -1,5 +1,6 @@
 #include "scanfilter/scan_geometry.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -85,6 +86,13 @@ std::optional<Eigen::Vector2d> localSurfaceDirection(const std::vector<Eigen::Ve
   const Eigen::Vector2d chord = b - a;
   if (chord.squaredNorm() == 0.0 || isFartherFromLineThan(points[i], a, b, tolerance)) return std::nullopt;
   return chord;
+}
+
+std::size_t beamsSpanning(double degrees, double angle_step, std::size_t beams) {
+  constexpr double kWholeStepSlack = 1e-9;  // in steps: 3 steps of 1° span 3°, not 4
+  const double step_deg = std::abs(angle_step) * 180.0 / std::numbers::pi;
+  const double spanned = std::ceil(degrees / step_deg - kWholeStepSlack);
+  return static_cast<std::size_t>(std::clamp(spanned, 1.0, static_cast<double>(std::max<std::size_t>(beams, 1))));
 }
 
 bool isFullTurn(const Scan& scan) {

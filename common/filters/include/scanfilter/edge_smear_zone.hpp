@@ -27,13 +27,11 @@ class EdgeSmearZone {
     std::uint64_t bucket;
     Eigen::Vector2d position;
   };
-  // Bucket coordinate of a finite position: radius-wide squares. Clamped to
-  // int32 so that no radius or position can overflow it (positions that far
-  // apart are never within a radius anyway); the key keeps 32 bits of each.
-  std::int64_t bucketCoordinate(double v) const;
-  static std::uint64_t bucketOf(std::int64_t bx, std::int64_t by) {
-    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(bx)) << 32) | static_cast<std::uint32_t>(by);
-  }
+  // Bucket coordinate of a finite position: radius-wide squares. Clamped one
+  // inside the int32 range, so that no radius or position can overflow it
+  // or its neighbours (positions that far apart are never within a radius
+  // anyway).
+  std::int32_t bucketCoordinate(double v) const;
   double radius_ = 0.0;
   std::vector<End> ends_;  // sorted by bucket
 };

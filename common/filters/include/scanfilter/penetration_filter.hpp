@@ -14,7 +14,6 @@
 #include "scanfilter/edge_smear_zone.hpp"
 #include "scanfilter/frame_alignment.hpp"
 #include "scanfilter/free_space_check.hpp"
-#include "scanfilter/grazing_returns.hpp"
 #include "scanfilter/implementation.hpp"
 #include "scanfilter/obstacle_window.hpp"
 #include "scanfilter/penetration_evidence.hpp"

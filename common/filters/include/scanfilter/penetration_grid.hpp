@@ -13,6 +13,7 @@
 
 #include <Eigen/Core>
 
+#include "scanfilter/cell_key.hpp"
 #include "scanfilter/floor_to_int.hpp"
 
 namespace scanfilter {
@@ -129,11 +130,7 @@ class PenetrationGrid {
     std::uint32_t total = 0;  // sum of counts: the tile is freed at zero
   };
 
-  static std::uint64_t tileKey(CellIndex c) {
-    const auto tx = static_cast<std::uint32_t>(c.x >> kTileBits);
-    const auto ty = static_cast<std::uint32_t>(c.y >> kTileBits);
-    return (static_cast<std::uint64_t>(tx) << 32) | ty;
-  }
+  static std::uint64_t tileKey(CellIndex c) { return cellKey(c.x >> kTileBits, c.y >> kTileBits); }
   static std::size_t slot(CellIndex c) {
     return static_cast<std::size_t>((c.y & (kTileSide - 1)) * kTileSide + (c.x & (kTileSide - 1)));
   }

@@ -94,6 +94,12 @@ inline bool isFartherFromLineThan(const Eigen::Vector2d& p, const Eigen::Vector2
 std::optional<Eigen::Vector2d> localSurfaceDirection(const std::vector<Eigen::Vector2d>& points, std::size_t i,
                                                      double tolerance, std::size_t span = 1);
 
+// How many beams of `angle_step` (rad, either sign, non-zero) it takes to
+// span `degrees` (> 0), rounded up: at least one, at most `beams` (so that a
+// tiny step cannot overflow a count). An angle a whole number of steps wide
+// up to rounding spans exactly that many.
+std::size_t beamsSpanning(double degrees, double angle_step, std::size_t beams);
+
 // True when the scan's beams cover a whole turn, so the first and last beams
 // are neighbours (the seam).
 bool isFullTurn(const Scan& scan);
