@@ -40,12 +40,14 @@ PenetrationFilter::PenetrationFilter(const PenetrationFilterParams& params)
       grid_(params.cell_size, params.obstacle_threshold),
       evidence_(params.cell_size),  // the same cells as grid_: a frame's runs go into both
       aligner_(params.alignment),
-      free_space_(params) {}
+      free_space_(params),
+      memory_(params.surface_memory) {}
 
 void PenetrationFilter::reset() {
   cache_.clear();
   grid_.clear();
   evidence_.clear();
+  memory_.clear();
   frames_seen_ = 0;
   last_origin_.reset();
   correction_ = Eigen::Isometry2d::Identity();
@@ -198,6 +200,7 @@ PenetrationFilter::Judgement PenetrationFilter::alignAndJudge(const Scan& scan, 
   findSurfaceEnds(scan);
   judgePoints(origin, labels);
   if (params_.free_space_check) markSeenThrough(scan, origin, labels);
+  if (memory_.enabled()) judgeAgainstMemory(scan.stamp, origin, labels);
   out.judged = true;
   return out;
 }
@@ -316,6 +319,16 @@ void PenetrationFilter::markSeenThrough(const Scan& scan, const Eigen::Vector2d&
     }
     if (free_space_.seenThrough(through, hits)) labels[i] = static_cast<std::uint8_t>(PointCode::kJump);
   }
+}
+
+void PenetrationFilter::judgeAgainstMemory(Stamp stamp, const Eigen::Vector2d& origin,
+                                           std::span<std::uint8_t> labels) {
+  memory_.update(origin, stamp);
+  for (std::size_t i = 0; i < labels.size(); ++i)
+    if (labels[i] == static_cast<std::uint8_t>(PointCode::kValid) && memory_.seenThrough(origin, points_[i]))
+      labels[i] = static_cast<std::uint8_t>(PointCode::kMisdetected);
+  // After judging, so that a frame's own surfaces never judge it.
+  memory_.remember(points_, keptReturns(labels), origin, stamp);
 }
 
 // --- Reference ---------------------------------------------------------------

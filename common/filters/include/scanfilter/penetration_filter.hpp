@@ -13,6 +13,7 @@
 #include "scanfilter/beam_mask.hpp"
 #include "scanfilter/edge_smear_zone.hpp"
 #include "scanfilter/frame_alignment.hpp"
+#include "scanfilter/surface_memory.hpp"
 #include "scanfilter/free_space_check.hpp"
 #include "scanfilter/implementation.hpp"
 #include "scanfilter/obstacle_window.hpp"
@@ -146,6 +147,9 @@ class PenetrationFilter {
   // free_space_check: kept returns that far cached frames looked through
   // become jump points (points_ and `origin` placed as judged).
   void markSeenThrough(const Scan& scan, const Eigen::Vector2d& origin, std::span<std::uint8_t> labels);
+  // surface_memory: kept returns beyond a remembered surface become
+  // misdetected; then the frame's kept surfaces are remembered.
+  void judgeAgainstMemory(Stamp stamp, const Eigen::Vector2d& origin, std::span<std::uint8_t> labels);
   // With rescue_min_baseline: the cached frames taken at least that far from
   // `origin` join the evidence; all of them while none is.
   void admitEvidence(const Eigen::Vector2d& origin);
@@ -165,6 +169,7 @@ class PenetrationFilter {
   std::size_t resets_ = 0;
   FrameAligner aligner_;
   FreeSpaceCheck free_space_;
+  SurfaceMemory memory_;
   EdgeSmearZone smear_zone_;
   std::vector<Eigen::Vector2d> surface_ends_;  // the frame's ends: smear_zone_'s, and the fast walk's to erase
   // Odometry pose -> the cache's frame: the sum of the frames' alignments

@@ -2,6 +2,7 @@
 #include <cstddef>
 
 #include "scanfilter/frame_alignment.hpp"
+#include "scanfilter/surface_memory.hpp"
 
 namespace scanfilter {
 
@@ -121,6 +122,10 @@ struct PenetrationFilterParams {
   // Beyond the paper: each frame is fitted to the cache before it is judged
   // (frame_alignment.hpp); a frame that does not fit is not judged.
   FrameAlignmentParams alignment;
+  // Beyond the paper (surface_memory.hpp): straight surfaces that judged
+  // frames saw well are remembered for longer than the cache, and a kept
+  // return beyond one is misdetected. lifetime 0: off (the paper).
+  SurfaceMemoryParams surface_memory;
 };
 
 }  // namespace scanfilter

@@ -1,0 +1,87 @@
+#include "scanfilter/straight_segments.hpp"
+
+#include <cmath>
+#include <cstddef>
+
+#include <Eigen/Eigenvalues>
+
+namespace scanfilter {
+
+namespace {
+
+double distanceToChord(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const Eigen::Vector2d ab = b - a;
+  const double length = ab.norm();
+  if (length == 0.0) return (p - a).norm();
+  return std::abs(ab.x() * (p.y() - a.y()) - ab.y() * (p.x() - a.x())) / length;
+}
+
+// `whole`: the run that `piece` was split from. The ends a piece shares with
+// it are marked as such; whether the frame saw past them is for the caller.
+void fitPiece(std::span<const Eigen::Vector2d> piece, std::span<const Eigen::Vector2d> whole,
+              const StraightSegmentParams& params, std::vector<StraightSegment>& out) {
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (const auto& p : piece) mean += p;
+  mean /= static_cast<double>(piece.size());
+  Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
+  for (const auto& p : piece) scatter += (p - mean) * (p - mean).transpose();
+  // The line's direction: the scatter's larger eigenvector (eigenvalues ascend).
+  const Eigen::Vector2d direction = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(scatter).eigenvectors().col(1);
+  const Eigen::Vector2d a = mean + direction * direction.dot(piece.front() - mean);
+  const Eigen::Vector2d b = mean + direction * direction.dot(piece.back() - mean);
+  if ((b - a).norm() < params.min_length) return;
+  out.push_back({a, b, static_cast<int>(piece.size()), piece.data() == whole.data(),
+                 piece.data() + piece.size() == whole.data() + whole.size()});
+}
+
+void splitAndFit(std::span<const Eigen::Vector2d> piece, std::span<const Eigen::Vector2d> whole,
+                 const StraightSegmentParams& params, std::vector<StraightSegment>& out) {
+  if (static_cast<int>(piece.size()) < params.min_returns) return;
+  std::size_t farthest = 0;
+  double farthest_off = 0.0;
+  for (std::size_t k = 1; k + 1 < piece.size(); ++k) {
+    const double off = distanceToChord(piece[k], piece.front(), piece.back());
+    if (off > farthest_off) farthest_off = off, farthest = k;
+  }
+  if (farthest_off > params.max_deviation) {  // a corner: both sides keep it
+    splitAndFit(piece.subspan(0, farthest + 1), whole, params, out);
+    splitAndFit(piece.subspan(farthest), whole, params, out);
+    return;
+  }
+  fitPiece(piece, whole, params, out);
+}
+
+}  // namespace
+
+std::vector<StraightSegment> straightSegments(std::span<const Eigen::Vector2d> points, const BeamMask& usable,
+                                              const Eigen::Vector2d& origin, const StraightSegmentParams& params) {
+  std::vector<StraightSegment> out;
+  std::vector<Eigen::Vector2d> run;
+  std::size_t first = 0;  // the run's first beam
+  const double spacing_sq = params.max_spacing * params.max_spacing;
+  const auto seenPast = [&](std::ptrdiff_t beam, const Eigen::Vector2d& end) {
+    if (beam < 0 || beam >= static_cast<std::ptrdiff_t>(points.size())) return false;
+    const auto j = static_cast<std::size_t>(beam);
+    return usable[j] && (points[j] - origin).norm() > (end - origin).norm() + params.end_step;
+  };
+  const auto finishRun = [&](std::size_t end) {  // the run is beams [first, end)
+    const std::size_t before = out.size();
+    splitAndFit(run, run, params, out);
+    for (std::size_t k = before; k < out.size(); ++k) {
+      out[k].a_seen_past = out[k].a_seen_past && seenPast(static_cast<std::ptrdiff_t>(first) - 1, run.front());
+      out[k].b_seen_past = out[k].b_seen_past && seenPast(static_cast<std::ptrdiff_t>(end), run.back());
+    }
+    run.clear();
+  };
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const bool joins = usable[i] && (run.empty() || (points[i] - run.back()).squaredNorm() <= spacing_sq);
+    if (!joins && !run.empty()) finishRun(i);
+    if (!usable[i]) continue;
+    if (run.empty()) first = i;
+    run.push_back(points[i]);
+  }
+  if (!run.empty()) finishRun(points.size());
+  return out;
+}
+
+}  // namespace scanfilter

@@ -1,0 +1,141 @@
+// straightSegments and SurfaceMemory: which surfaces a frame's returns make,
+// which are remembered, and which later returns lie beyond them.
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include <gtest/gtest.h>
+
+#include "scanfilter/stamp.hpp"
+#include "scanfilter/straight_segments.hpp"
+#include "scanfilter/surface_memory.hpp"
+
+namespace scanfilter {
+namespace {
+
+const Eigen::Vector2d kOrigin = Eigen::Vector2d::Zero();
+const Eigen::Vector2d kNoReturn{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+
+// Returns every `step` m from `from` to `to` (both included), in beam order.
+void appendLine(std::vector<Eigen::Vector2d>& points, Eigen::Vector2d from, Eigen::Vector2d to, double step = 0.05) {
+  const int n = static_cast<int>(std::lround((to - from).norm() / step));
+  for (int k = 0; k <= n; ++k) points.push_back(from + (to - from) * (static_cast<double>(k) / n));
+}
+
+BeamMask usableReturns(const std::vector<Eigen::Vector2d>& points) {
+  BeamMask usable(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) usable.set(i, std::isfinite(points[i].x()));
+  return usable;
+}
+
+std::vector<StraightSegment> segmentsOf(const std::vector<Eigen::Vector2d>& points) {
+  return straightSegments(points, usableReturns(points), kOrigin, StraightSegmentParams{});
+}
+
+Stamp at(double seconds) { return Stamp::fromNanoseconds(static_cast<std::int64_t>(std::llround(seconds * 1e9))); }
+
+TEST(StraightSegments, SplitsARunAtACorner) {
+  std::vector<Eigen::Vector2d> points;
+  appendLine(points, {-1.0, 1.0}, {1.0, 1.0});
+  points.pop_back();  // the corner once
+  appendLine(points, {1.0, 1.0}, {1.0, -1.0});
+  const auto segments = segmentsOf(points);
+  ASSERT_EQ(segments.size(), 2u);
+  EXPECT_LT((segments[0].a - Eigen::Vector2d(-1.0, 1.0)).norm(), 0.01);
+  EXPECT_LT((segments[0].b - Eigen::Vector2d(1.0, 1.0)).norm(), 0.05);
+  EXPECT_LT((segments[1].b - Eigen::Vector2d(1.0, -1.0)).norm(), 0.01);
+}
+
+TEST(StraightSegments, NeedsEnoughReturnsCloseTogether) {
+  std::vector<Eigen::Vector2d> points;
+  appendLine(points, {0.0, 1.0}, {0.2, 1.0});    // 5 returns, 0.2 m: too few and too short
+  appendLine(points, {1.0, 1.0}, {2.0, 1.0}, 0.2);  // spaced wider than max_spacing
+  EXPECT_TRUE(segmentsOf(points).empty());
+}
+
+TEST(StraightSegments, MarksTheEndsTheFrameSawPast) {
+  std::vector<Eigen::Vector2d> points;
+  points.emplace_back(-0.6, 3.0);  // farther than the wall's first return: the wall ends there
+  appendLine(points, {-0.5, 1.0}, {0.5, 1.0});
+  points.emplace_back(0.55, 0.5);  // nearer: something hides the wall, which may go on
+  const auto segments = segmentsOf(points);
+  ASSERT_EQ(segments.size(), 1u);
+  EXPECT_TRUE(segments[0].a_seen_past);
+  EXPECT_FALSE(segments[0].b_seen_past);
+  points.front() = kNoReturn;  // no return says nothing
+  EXPECT_FALSE(segmentsOf(points)[0].a_seen_past);
+}
+
+// A memory that has seen the wall y = 1, x in [-1, 1], from the origin at t = 0.
+SurfaceMemory memoryOfAWall(const SurfaceMemoryParams& params = {}) {
+  SurfaceMemory memory(params);
+  std::vector<Eigen::Vector2d> wall;
+  appendLine(wall, {-1.0, 1.0}, {1.0, 1.0});
+  memory.update(kOrigin, at(0.0));
+  memory.remember(wall, usableReturns(wall), kOrigin, at(0.0));
+  return memory;
+}
+
+TEST(SurfaceMemory, AReturnBeyondARememberedSurfaceWasSeenThroughIt) {
+  const SurfaceMemory memory = memoryOfAWall();
+  ASSERT_EQ(memory.size(), 1u);
+  EXPECT_TRUE(memory.seenThrough(kOrigin, {0.0, 2.0}));    // a ghost 1 m behind a mirror
+  EXPECT_FALSE(memory.seenThrough(kOrigin, {0.0, 1.1}));   // on the wall, within the margin
+  EXPECT_FALSE(memory.seenThrough(kOrigin, {0.0, 0.5}));   // in front of it
+  EXPECT_FALSE(memory.seenThrough(kOrigin, {1.9, 1.9}));   // beside its end (crosses at x = 1.0)
+  EXPECT_FALSE(memory.seenThrough(kOrigin, {3.0, 2.0}));   // past its end
+  // From the other side the wall is in front of the sensor, not behind the return.
+  EXPECT_FALSE(memory.seenThrough({0.0, 2.0}, {0.0, 1.5}));
+}
+
+TEST(SurfaceMemory, ForgetsWhatItDidNotSeeAgainWithinItsLifetime) {
+  SurfaceMemoryParams params;
+  params.lifetime = 5.0;
+  SurfaceMemory memory = memoryOfAWall(params);
+  memory.update(kOrigin, at(4.9));
+  EXPECT_TRUE(memory.seenThrough(kOrigin, {0.0, 2.0}));
+  memory.update(kOrigin, at(5.1));
+  EXPECT_FALSE(memory.seenThrough(kOrigin, {0.0, 2.0}));
+}
+
+TEST(SurfaceMemory, ForgetsASurfaceTheSensorDroveThrough) {
+  SurfaceMemory memory = memoryOfAWall();
+  memory.update({0.0, 1.5}, at(1.0));
+  EXPECT_EQ(memory.size(), 0u);
+}
+
+TEST(SurfaceMemory, DoesNotRememberSurfacesSeenAtGrazingIncidence) {
+  SurfaceMemory memory(SurfaceMemoryParams{});
+  std::vector<Eigen::Vector2d> wall;
+  appendLine(wall, {2.0, 0.5}, {4.0, 0.5});  // the beam to its middle meets it at 9.5°
+  memory.remember(wall, usableReturns(wall), kOrigin, at(0.0));
+  EXPECT_EQ(memory.size(), 0u);
+}
+
+TEST(SurfaceMemory, ASurfaceSeenAgainMovesToWhereTheNewFrameSeesIt) {
+  SurfaceMemory memory = memoryOfAWall();
+  // Drifted odometry: the same wall 0.25 m farther, only its middle seen.
+  std::vector<Eigen::Vector2d> again;
+  appendLine(again, {-0.3, 1.25}, {0.3, 1.25});
+  memory.update(kOrigin, at(1.0));
+  memory.remember(again, usableReturns(again), kOrigin, at(1.0));
+  ASSERT_EQ(memory.size(), 1u);
+  EXPECT_FALSE(memory.seenThrough(kOrigin, {0.8, 1.25}));  // on the wall where it is now
+  EXPECT_TRUE(memory.seenThrough(kOrigin, {0.8, 2.25}));   // the part not seen again is still held
+}
+
+TEST(SurfaceMemory, ASurfaceSeenAgainEndsWhereTheNewFrameSawPastIt) {
+  SurfaceMemory memory = memoryOfAWall();
+  std::vector<Eigen::Vector2d> again;
+  appendLine(again, {-1.0, 1.0}, {0.3, 1.0});
+  appendLine(again, {0.6, 3.0}, {1.0, 3.0});  // beyond x = 0.3: a door open now
+  memory.update(kOrigin, at(1.0));
+  memory.remember(again, usableReturns(again), kOrigin, at(1.0));
+  EXPECT_FALSE(memory.seenThrough(kOrigin, {0.9, 2.0}));  // through the doorway
+  EXPECT_TRUE(memory.seenThrough(kOrigin, {-0.5, 3.0}));
+}
+
+}  // namespace
+}  // namespace scanfilter
