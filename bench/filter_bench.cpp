@@ -104,6 +104,9 @@ ExploredState& explored(Implementation impl, int area_m2, int beams) {
   // alignment before it is shared code, the same for both (its cost: the
   // per-scan section of docs/performance.md).
   p.alignment.enabled = false;
+  // Nor the surface memory: the same code in both (its cost: the stream
+  // benchmark without it).
+  p.surface_memory.lifetime = 0.0;
   state.filter = makePenetrationFilter(p, impl);
   sim::ScanSimulator simulator(scene, 1);
   state.sensor = simulator.header().sensor;
@@ -242,6 +245,7 @@ void BM_PenetrationStream(benchmark::State& state) {
   const HallTour& tour = hallTour(beams);
   PenetrationFilterParams params = tour.params;
   params.free_space_check = state.range(2) != 0;  // its cost: the same stream without it
+  if (state.range(3) == 0) params.surface_memory.lifetime = 0.0;  // the same
   auto filter = makePenetrationFilter(params, Implementation::kFast);
   std::vector<std::uint8_t> labels;
   std::size_t next = 0;
@@ -277,11 +281,12 @@ BENCHMARK_CAPTURE(BM_PenetrationJudge, reference, Implementation::kReference)
     ->ArgsProduct({{360, 1080, 3600}, {100, 1000}})->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_PenetrationJudge, fast, Implementation::kFast)
     ->ArgsProduct({{360, 1080, 3600}, {100, 1000}})->Unit(benchmark::kMicrosecond);
-// The shipped step 2 warm and cold, and warm without the free-space check.
+// The shipped step 2 warm and cold, and warm without the free-space check
+// or without the surface memory.
 BENCHMARK(BM_PenetrationStream)
-    ->ArgNames({"beams", "cold", "free_space"})
-    ->Args({360, 0, 1})->Args({360, 1, 1})->Args({360, 0, 0})
-    ->Args({3600, 0, 1})->Args({3600, 1, 1})->Args({3600, 0, 0})
+    ->ArgNames({"beams", "cold", "free_space", "surface_memory"})
+    ->Args({360, 0, 1, 1})->Args({360, 1, 1, 1})->Args({360, 0, 0, 1})->Args({360, 0, 1, 0})
+    ->Args({3600, 0, 1, 1})->Args({3600, 1, 1, 1})->Args({3600, 0, 0, 1})->Args({3600, 0, 1, 0})
     ->Unit(benchmark::kMicrosecond);
 
 BENCHMARK_MAIN();

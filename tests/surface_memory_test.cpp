@@ -73,7 +73,7 @@ SurfaceMemory memoryOfAWall(const SurfaceMemoryParams& params = {}) {
   SurfaceMemory memory(params);
   std::vector<Eigen::Vector2d> wall;
   appendLine(wall, {-1.0, 1.0}, {1.0, 1.0});
-  memory.update(kOrigin, at(0.0));
+  memory.forget(kOrigin, at(0.0));
   memory.remember(wall, usableReturns(wall), kOrigin, at(0.0));
   return memory;
 }
@@ -81,28 +81,31 @@ SurfaceMemory memoryOfAWall(const SurfaceMemoryParams& params = {}) {
 TEST(SurfaceMemory, AReturnBeyondARememberedSurfaceWasSeenThroughIt) {
   const SurfaceMemory memory = memoryOfAWall();
   ASSERT_EQ(memory.size(), 1u);
-  EXPECT_TRUE(memory.seenThrough(kOrigin, {0.0, 2.0}));    // a ghost 1 m behind a mirror
-  EXPECT_FALSE(memory.seenThrough(kOrigin, {0.0, 1.1}));   // on the wall, within the margin
-  EXPECT_FALSE(memory.seenThrough(kOrigin, {0.0, 0.5}));   // in front of it
-  EXPECT_FALSE(memory.seenThrough(kOrigin, {1.9, 1.9}));   // beside its end (crosses at x = 1.0)
-  EXPECT_FALSE(memory.seenThrough(kOrigin, {3.0, 2.0}));   // past its end
+  EXPECT_TRUE(memory.seenThrough(kOrigin, {0.0, 2.0}, at(1.0)));    // a ghost 1 m behind a mirror
+  EXPECT_FALSE(memory.seenThrough(kOrigin, {0.0, 1.1}, at(1.0)));   // on the wall, within the margin
+  EXPECT_FALSE(memory.seenThrough(kOrigin, {0.0, 0.5}, at(1.0)));   // in front of it
+  EXPECT_FALSE(memory.seenThrough(kOrigin, {1.9, 1.9}, at(1.0)));   // beside its end (crosses at x = 1.0)
+  EXPECT_FALSE(memory.seenThrough(kOrigin, {3.0, 2.0}, at(1.0)));   // past its end
   // From the other side the wall is in front of the sensor, not behind the return.
-  EXPECT_FALSE(memory.seenThrough({0.0, 2.0}, {0.0, 1.5}));
+  EXPECT_FALSE(memory.seenThrough({0.0, 2.0}, {0.0, 1.5}, at(1.0)));
 }
 
 TEST(SurfaceMemory, ForgetsWhatItDidNotSeeAgainWithinItsLifetime) {
   SurfaceMemoryParams params;
   params.lifetime = 5.0;
   SurfaceMemory memory = memoryOfAWall(params);
-  memory.update(kOrigin, at(4.9));
-  EXPECT_TRUE(memory.seenThrough(kOrigin, {0.0, 2.0}));
-  memory.update(kOrigin, at(5.1));
-  EXPECT_FALSE(memory.seenThrough(kOrigin, {0.0, 2.0}));
+  EXPECT_TRUE(memory.seenThrough(kOrigin, {0.0, 2.0}, at(4.9)));
+  // Judging alone (PenetrationFilter::judge changes no state) already
+  // ignores it past its lifetime; forget() drops it.
+  EXPECT_FALSE(memory.seenThrough(kOrigin, {0.0, 2.0}, at(5.1)));
+  EXPECT_EQ(memory.size(), 1u);
+  memory.forget(kOrigin, at(5.1));
+  EXPECT_EQ(memory.size(), 0u);
 }
 
 TEST(SurfaceMemory, ForgetsASurfaceTheSensorDroveThrough) {
   SurfaceMemory memory = memoryOfAWall();
-  memory.update({0.0, 1.5}, at(1.0));
+  memory.forget({0.0, 1.5}, at(1.0));
   EXPECT_EQ(memory.size(), 0u);
 }
 
@@ -119,11 +122,11 @@ TEST(SurfaceMemory, ASurfaceSeenAgainMovesToWhereTheNewFrameSeesIt) {
   // Drifted odometry: the same wall 0.25 m farther, only its middle seen.
   std::vector<Eigen::Vector2d> again;
   appendLine(again, {-0.3, 1.25}, {0.3, 1.25});
-  memory.update(kOrigin, at(1.0));
+  memory.forget(kOrigin, at(1.0));
   memory.remember(again, usableReturns(again), kOrigin, at(1.0));
   ASSERT_EQ(memory.size(), 1u);
-  EXPECT_FALSE(memory.seenThrough(kOrigin, {0.8, 1.25}));  // on the wall where it is now
-  EXPECT_TRUE(memory.seenThrough(kOrigin, {0.8, 2.25}));   // the part not seen again is still held
+  EXPECT_FALSE(memory.seenThrough(kOrigin, {0.8, 1.25}, at(1.0)));  // on the wall where it is now
+  EXPECT_TRUE(memory.seenThrough(kOrigin, {0.8, 2.25}, at(1.0)));   // the part not seen again is still held
 }
 
 TEST(SurfaceMemory, ASurfaceSeenAgainEndsWhereTheNewFrameSawPastIt) {
@@ -131,10 +134,10 @@ TEST(SurfaceMemory, ASurfaceSeenAgainEndsWhereTheNewFrameSawPastIt) {
   std::vector<Eigen::Vector2d> again;
   appendLine(again, {-1.0, 1.0}, {0.3, 1.0});
   appendLine(again, {0.6, 3.0}, {1.0, 3.0});  // beyond x = 0.3: a door open now
-  memory.update(kOrigin, at(1.0));
+  memory.forget(kOrigin, at(1.0));
   memory.remember(again, usableReturns(again), kOrigin, at(1.0));
-  EXPECT_FALSE(memory.seenThrough(kOrigin, {0.9, 2.0}));  // through the doorway
-  EXPECT_TRUE(memory.seenThrough(kOrigin, {-0.5, 3.0}));
+  EXPECT_FALSE(memory.seenThrough(kOrigin, {0.9, 2.0}, at(1.0)));  // through the doorway
+  EXPECT_TRUE(memory.seenThrough(kOrigin, {-0.5, 3.0}, at(1.0)));
 }
 
 }  // namespace

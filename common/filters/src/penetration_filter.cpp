@@ -153,6 +153,8 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
   resetOnPoseJump(origin, scan.stamp);
   ++frames_seen_;
   expireFrames(scan.stamp);
+  // Where the last correction puts the sensor: within the alignment's step.
+  if (memory_.enabled()) memory_.forget(correction_ * origin, scan.stamp);
   // Decided before judging, so that a frame the cache will skip does not
   // push the oldest one out (and is judged against all of them).
   const bool caches = cachesFrameAt(scan.stamp);
@@ -162,6 +164,9 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
     const Judgement judgement = alignAndJudge(scan, sensor, labels);
     correction_ = judgement.correction;
     unaligned_ += !judgement.judged;
+    // After judging, so that a frame's own surfaces never judge it.
+    if (judgement.judged && memory_.enabled())
+      memory_.remember(points_, keptReturns(labels), judgement.origin, scan.stamp);
   } else {
     placeFrame(scan, sensor);
   }
@@ -200,8 +205,9 @@ PenetrationFilter::Judgement PenetrationFilter::alignAndJudge(const Scan& scan, 
   findSurfaceEnds(scan);
   judgePoints(origin, labels);
   if (params_.free_space_check) markSeenThrough(scan, origin, labels);
-  if (memory_.enabled()) judgeAgainstMemory(scan.stamp, origin, labels);
+  if (memory_.enabled()) markBeyondRememberedSurfaces(scan.stamp, origin, labels);
   out.judged = true;
+  out.origin = origin;
   return out;
 }
 
@@ -321,14 +327,11 @@ void PenetrationFilter::markSeenThrough(const Scan& scan, const Eigen::Vector2d&
   }
 }
 
-void PenetrationFilter::judgeAgainstMemory(Stamp stamp, const Eigen::Vector2d& origin,
-                                           std::span<std::uint8_t> labels) {
-  memory_.update(origin, stamp);
+void PenetrationFilter::markBeyondRememberedSurfaces(Stamp stamp, const Eigen::Vector2d& origin,
+                                                     std::span<std::uint8_t> labels) const {
   for (std::size_t i = 0; i < labels.size(); ++i)
-    if (labels[i] == static_cast<std::uint8_t>(PointCode::kValid) && memory_.seenThrough(origin, points_[i]))
+    if (labels[i] == static_cast<std::uint8_t>(PointCode::kValid) && memory_.seenThrough(origin, points_[i], stamp))
       labels[i] = static_cast<std::uint8_t>(PointCode::kMisdetected);
-  // After judging, so that a frame's own surfaces never judge it.
-  memory_.remember(points_, keptReturns(labels), origin, stamp);
 }
 
 // --- Reference ---------------------------------------------------------------

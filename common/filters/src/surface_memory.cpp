@@ -25,7 +25,7 @@ void SurfaceMemory::clear() {
   last_origin_.reset();
 }
 
-void SurfaceMemory::update(const Eigen::Vector2d& origin, Stamp now) {
+void SurfaceMemory::forget(const Eigen::Vector2d& origin, Stamp now) {
   std::erase_if(segments_, [&](const Segment& s) { return now.secondsSince(s.stamp) > params_.lifetime; });
   if (last_origin_) {
     const Eigen::Vector2d from = *last_origin_;
@@ -47,12 +47,12 @@ bool SurfaceMemory::crosses(const Segment& s, const Eigen::Vector2d& origin, con
   return along > params_.end_margin && along < s.length - params_.end_margin;
 }
 
-bool SurfaceMemory::seenThrough(const Eigen::Vector2d& origin, const Eigen::Vector2d& p) const {
+bool SurfaceMemory::seenThrough(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now) const {
   const double margin = params_.behind_margin + params_.behind_margin_per_m * (p - origin).norm();
   const Eigen::Vector2d lo = origin.cwiseMin(p), hi = origin.cwiseMax(p);
   return std::any_of(segments_.begin(), segments_.end(), [&](const Segment& s) {
     const bool boxes_meet = (s.hi.array() >= lo.array()).all() && (s.lo.array() <= hi.array()).all();
-    return boxes_meet && crosses(s, origin, p, margin);
+    return boxes_meet && now.secondsSince(s.stamp) <= params_.lifetime && crosses(s, origin, p, margin);
   });
 }
 

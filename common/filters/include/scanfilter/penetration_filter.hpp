@@ -116,6 +116,7 @@ class PenetrationFilter {
   struct Judgement {
     bool judged = false;
     Eigen::Isometry2d correction;  // the running correction after this frame
+    Eigen::Vector2d origin = Eigen::Vector2d::Zero();  // the sensor, where the frame was judged from
   };
   Judgement alignAndJudge(const Scan& scan, const SensorInfo& sensor, std::span<std::uint8_t> labels);
   void judgePoints(const Eigen::Vector2d& origin, std::span<std::uint8_t> labels);
@@ -148,8 +149,8 @@ class PenetrationFilter {
   // become jump points (points_ and `origin` placed as judged).
   void markSeenThrough(const Scan& scan, const Eigen::Vector2d& origin, std::span<std::uint8_t> labels);
   // surface_memory: kept returns beyond a remembered surface become
-  // misdetected; then the frame's kept surfaces are remembered.
-  void judgeAgainstMemory(Stamp stamp, const Eigen::Vector2d& origin, std::span<std::uint8_t> labels);
+  // misdetected (points_ and `origin` placed as judged).
+  void markBeyondRememberedSurfaces(Stamp stamp, const Eigen::Vector2d& origin, std::span<std::uint8_t> labels) const;
   // With rescue_min_baseline: the cached frames taken at least that far from
   // `origin` join the evidence; all of them while none is.
   void admitEvidence(const Eigen::Vector2d& origin);

@@ -49,9 +49,11 @@ class SurfaceMemory {
   void clear();
   // Forgets what is older than the lifetime, and what the sensor's path
   // since the last call crossed.
-  void update(const Eigen::Vector2d& origin, Stamp now);
-  // True when the return at p, seen from origin, lies beyond a remembered surface.
-  bool seenThrough(const Eigen::Vector2d& origin, const Eigen::Vector2d& p) const;
+  void forget(const Eigen::Vector2d& origin, Stamp now);
+  // True when the return at p, seen from origin at `now`, lies beyond a
+  // remembered surface (one seen again within the lifetime: judging without
+  // forgetting first still ignores older ones).
+  bool seenThrough(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now) const;
   // Remembers the straight surfaces of one frame's usable returns.
   void remember(std::span<const Eigen::Vector2d> points, const BeamMask& usable, const Eigen::Vector2d& origin,
                 Stamp stamp);
