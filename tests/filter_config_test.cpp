@@ -60,6 +60,22 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(s.jump.noise_estimate_window_scans, d.jump.noise_estimate_window_scans);
   EXPECT_EQ(s.jump.noise_estimate_min_samples, d.jump.noise_estimate_min_samples);
   EXPECT_EQ(s.penetration.alignment.max_fit_points, d.penetration.alignment.max_fit_points);
+  const SurfaceMemoryParams& sm = s.penetration.surface_memory;
+  const SurfaceMemoryParams& dm = d.penetration.surface_memory;
+  EXPECT_EQ(sm.lifetime, dm.lifetime);
+  EXPECT_EQ(sm.min_interval, dm.min_interval);
+  EXPECT_EQ(sm.min_beam_surface_angle_deg, dm.min_beam_surface_angle_deg);
+  EXPECT_EQ(sm.surface_margin, dm.surface_margin);
+  EXPECT_EQ(sm.surface_margin_per_m, dm.surface_margin_per_m);
+  EXPECT_EQ(sm.end_margin, dm.end_margin);
+  EXPECT_EQ(sm.merge_angle_deg, dm.merge_angle_deg);
+  EXPECT_EQ(sm.merge_offset, dm.merge_offset);
+  EXPECT_EQ(sm.max_segments, dm.max_segments);
+  EXPECT_EQ(sm.segments.max_spacing, dm.segments.max_spacing);
+  EXPECT_EQ(sm.segments.max_deviation, dm.segments.max_deviation);
+  EXPECT_EQ(sm.segments.min_returns, dm.segments.min_returns);
+  EXPECT_EQ(sm.segments.min_length, dm.segments.min_length);
+  EXPECT_EQ(sm.segments.end_step, dm.segments.end_step);
   EXPECT_FALSE(shipped.angular_accuracy_deg) << "auto: from the sensor";
 }
 
@@ -69,6 +85,7 @@ TEST(FilterConfig, PaperLiteralPresetLoads) {
   EXPECT_DOUBLE_EQ(paper.params.penetration.behind_margin, 0.1);
   EXPECT_FALSE(paper.params.penetration.rescue_persistent_points);
   EXPECT_FALSE(paper.params.penetration.free_space_check);
+  EXPECT_EQ(paper.params.penetration.surface_memory.lifetime, 0.0) << "no memory beyond T_max";
   EXPECT_FALSE(paper.params.jump.noise_estimate) << "the paper has no noise model";
   EXPECT_FALSE(paper.params.jump.keep_foreground_clusters) << "eq. 7 as printed deletes every lone return";
   EXPECT_FALSE(paper.params.jump.keep_unresolved_returns);
@@ -100,6 +117,11 @@ TEST(FilterConfigErrors, NameFileLineAndKey) {
   EXPECT_EQ(errorOf("penetration_filter:\n  free_space_min_frames: 41\n"),
             "f.yaml:2: penetration_filter.free_space_min_frames: expected an integer from 1 to max_cache_frames");
   EXPECT_EQ(errorOf("penetration_filter:\n  max_cache_frames: 60\n  free_space_min_frames: 41\n"), "no error");
+  EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    surface_margin: 0\n"),
+            "f.yaml:3: penetration_filter.surface_memory.surface_margin: expected 0.001 <= value <= 10 (m; returns on "
+            "the surface must not count)");
+  EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    behind_margin: 0.2\n"),
+            "f.yaml:3: penetration_filter.surface_memory.behind_margin: unknown key");
   EXPECT_EQ(errorOf("penetration_filter:\n  free_space_veto_count: 0\n"),
             "f.yaml:2: penetration_filter.free_space_veto_count: expected an integer >= 1");
   EXPECT_EQ(errorOf("penetration_filter:\n  cache_min_interval: -0.1\n"),

@@ -48,11 +48,17 @@ TEST(StraightSegments, SplitsARunAtACorner) {
   EXPECT_LT((segments[1].b - Eigen::Vector2d(1.0, -1.0)).norm(), 0.01);
 }
 
-TEST(StraightSegments, NeedsEnoughReturnsCloseTogether) {
-  std::vector<Eigen::Vector2d> points;
-  appendLine(points, {0.0, 1.0}, {0.2, 1.0});    // 5 returns, 0.2 m: too few and too short
-  appendLine(points, {1.0, 1.0}, {2.0, 1.0}, 0.2);  // spaced wider than max_spacing
-  EXPECT_TRUE(segmentsOf(points).empty());
+TEST(StraightSegments, NeedsEnoughReturnsOverEnoughLengthCloseTogether) {
+  std::vector<Eigen::Vector2d> few, short_run, sparse;
+  appendLine(few, {0.0, 1.0}, {0.5, 1.0}, 0.125);       // 5 returns over 0.5 m
+  appendLine(short_run, {0.0, 1.0}, {0.2, 1.0}, 0.02);  // 11 returns over 0.2 m
+  appendLine(sparse, {0.0, 1.0}, {2.0, 1.0}, 0.2);      // spaced wider than max_spacing
+  EXPECT_TRUE(segmentsOf(few).empty());
+  EXPECT_TRUE(segmentsOf(short_run).empty());
+  EXPECT_TRUE(segmentsOf(sparse).empty());
+  std::vector<Eigen::Vector2d> enough;
+  appendLine(enough, {0.0, 1.0}, {0.5, 1.0}, 0.1);  // 6 returns over 0.5 m
+  EXPECT_EQ(segmentsOf(enough).size(), 1u);
 }
 
 TEST(StraightSegments, MarksTheEndsTheFrameSawPast) {
@@ -81,26 +87,53 @@ SurfaceMemory memoryOfAWall(const SurfaceMemoryParams& params = {}) {
 TEST(SurfaceMemory, AReturnBeyondARememberedSurfaceWasSeenThroughIt) {
   const SurfaceMemory memory = memoryOfAWall();
   ASSERT_EQ(memory.size(), 1u);
-  EXPECT_TRUE(memory.seenThrough(kOrigin, {0.0, 2.0}, at(1.0)));    // a ghost 1 m behind a mirror
-  EXPECT_FALSE(memory.seenThrough(kOrigin, {0.0, 1.1}, at(1.0)));   // on the wall, within the margin
-  EXPECT_FALSE(memory.seenThrough(kOrigin, {0.0, 0.5}, at(1.0)));   // in front of it
-  EXPECT_FALSE(memory.seenThrough(kOrigin, {1.9, 1.9}, at(1.0)));   // beside its end (crosses at x = 1.0)
-  EXPECT_FALSE(memory.seenThrough(kOrigin, {3.0, 2.0}, at(1.0)));   // past its end
+  EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {0.0, 2.0}, at(1.0)));    // a ghost 1 m behind a mirror
+  EXPECT_FALSE(memory.liesBeyondASurface(kOrigin, {0.0, 1.1}, at(1.0)));   // on the wall, within the margin
+  EXPECT_FALSE(memory.liesBeyondASurface(kOrigin, {0.0, 0.5}, at(1.0)));   // in front of it
+  EXPECT_FALSE(memory.liesBeyondASurface(kOrigin, {1.9, 1.9}, at(1.0)));   // beside its end (crosses at x = 1.0)
+  EXPECT_FALSE(memory.liesBeyondASurface(kOrigin, {1.9, 2.0}, at(1.0)));   // within end_margin (x = 0.95)
+  EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {1.7, 2.0}, at(1.0)));    // inside it (x = 0.85)
+  EXPECT_FALSE(memory.liesBeyondASurface(kOrigin, {3.0, 2.0}, at(1.0)));   // past its end
   // From the other side the wall is in front of the sensor, not behind the return.
-  EXPECT_FALSE(memory.seenThrough({0.0, 2.0}, {0.0, 1.5}, at(1.0)));
+  EXPECT_FALSE(memory.liesBeyondASurface({0.0, 2.0}, {0.0, 1.5}, at(1.0)));
 }
 
 TEST(SurfaceMemory, ForgetsWhatItDidNotSeeAgainWithinItsLifetime) {
   SurfaceMemoryParams params;
   params.lifetime = 5.0;
   SurfaceMemory memory = memoryOfAWall(params);
-  EXPECT_TRUE(memory.seenThrough(kOrigin, {0.0, 2.0}, at(4.9)));
+  EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {0.0, 2.0}, at(4.9)));
   // Judging alone (PenetrationFilter::judge changes no state) already
   // ignores it past its lifetime; forget() drops it.
-  EXPECT_FALSE(memory.seenThrough(kOrigin, {0.0, 2.0}, at(5.1)));
+  EXPECT_FALSE(memory.liesBeyondASurface(kOrigin, {0.0, 2.0}, at(5.1)));
   EXPECT_EQ(memory.size(), 1u);
   memory.forget(kOrigin, at(5.1));
   EXPECT_EQ(memory.size(), 0u);
+}
+
+TEST(SurfaceMemory, TheMarginGrowsWithRange) {
+  SurfaceMemory memory(SurfaceMemoryParams{});
+  std::vector<Eigen::Vector2d> far_wall;
+  appendLine(far_wall, {-1.0, 5.0}, {1.0, 5.0});
+  memory.remember(far_wall, usableReturns(far_wall), kOrigin, at(0.0));
+  // 0.25 m behind it at 5.25 m: within 0.20 m + 2 cm/m, so on it.
+  EXPECT_FALSE(memory.liesBeyondASurface(kOrigin, {0.0, 5.25}, at(1.0)));
+  EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {0.0, 5.40}, at(1.0)));
+  SurfaceMemoryParams flat;
+  flat.surface_margin_per_m = 0.0;
+  SurfaceMemory flat_memory(flat);
+  flat_memory.remember(far_wall, usableReturns(far_wall), kOrigin, at(0.0));
+  EXPECT_TRUE(flat_memory.liesBeyondASurface(kOrigin, {0.0, 5.25}, at(1.0)));
+}
+
+TEST(SurfaceMemory, RemembersAFrameAtMostEveryMinInterval) {
+  SurfaceMemory memory = memoryOfAWall();
+  std::vector<Eigen::Vector2d> other;
+  appendLine(other, {-1.0, -1.0}, {1.0, -1.0});
+  memory.remember(other, usableReturns(other), kOrigin, at(0.1));
+  EXPECT_EQ(memory.size(), 1u);
+  memory.remember(other, usableReturns(other), kOrigin, at(0.3));
+  EXPECT_EQ(memory.size(), 2u);
 }
 
 TEST(SurfaceMemory, ForgetsASurfaceTheSensorDroveThrough) {
@@ -124,9 +157,38 @@ TEST(SurfaceMemory, ASurfaceSeenAgainMovesToWhereTheNewFrameSeesIt) {
   appendLine(again, {-0.3, 1.25}, {0.3, 1.25});
   memory.forget(kOrigin, at(1.0));
   memory.remember(again, usableReturns(again), kOrigin, at(1.0));
-  ASSERT_EQ(memory.size(), 1u);
-  EXPECT_FALSE(memory.seenThrough(kOrigin, {0.8, 1.25}, at(1.0)));  // on the wall where it is now
-  EXPECT_TRUE(memory.seenThrough(kOrigin, {0.8, 2.25}, at(1.0)));   // the part not seen again is still held
+  EXPECT_FALSE(memory.liesBeyondASurface(kOrigin, {0.8, 1.25}, at(1.0)));  // on the wall where it is now
+  EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {0.8, 2.25}, at(1.0)));   // the part not seen again is still held
+  EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {0.45, 2.25}, at(1.0)));  // no end margin where they join (x = 0.25)
+}
+
+TEST(SurfaceMemory, AStretchNotSeenAgainExpiresWhenItsTimeIsUp) {
+  SurfaceMemory memory = memoryOfAWall();  // seen at 0 s, remembered for 20 s
+  std::vector<Eigen::Vector2d> middle;
+  appendLine(middle, {-0.3, 1.0}, {0.3, 1.0});
+  memory.forget(kOrigin, at(15.0));
+  memory.remember(middle, usableReturns(middle), kOrigin, at(15.0));
+  memory.forget(kOrigin, at(21.0));
+  EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {0.0, 2.0}, at(21.0)));   // seen again at 15 s
+  EXPECT_FALSE(memory.liesBeyondASurface(kOrigin, {0.8, 2.0}, at(21.0)));  // last seen at 0 s
+}
+
+TEST(SurfaceMemory, MergesOnlySurfacesOfOneDirection) {
+  SurfaceMemory memory = memoryOfAWall();
+  std::vector<Eigen::Vector2d> tilted;  // 20° to the wall, through its middle
+  appendLine(tilted, {-0.5, 1.0 - 0.5 * std::tan(0.349)}, {0.5, 1.0 + 0.5 * std::tan(0.349)});
+  memory.remember(tilted, usableReturns(tilted), kOrigin, at(1.0));
+  EXPECT_EQ(memory.size(), 2u);
+}
+
+TEST(SurfaceMemory, MergesASurfaceSeenInTheOtherDirection) {
+  SurfaceMemory memory = memoryOfAWall();  // remembered from x = -1 to 1
+  std::vector<Eigen::Vector2d> reversed;   // the scan runs the other way, 0.1 m farther
+  appendLine(reversed, {0.5, 1.1}, {-0.5, 1.1});
+  memory.remember(reversed, usableReturns(reversed), kOrigin, at(1.0));
+  EXPECT_FALSE(memory.liesBeyondASurface(kOrigin, {0.0, 1.1}, at(1.0)));
+  EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {0.8, 2.0}, at(1.0)));
+  EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {-0.8, 2.0}, at(1.0)));
 }
 
 TEST(SurfaceMemory, ASurfaceSeenAgainEndsWhereTheNewFrameSawPastIt) {
@@ -136,8 +198,8 @@ TEST(SurfaceMemory, ASurfaceSeenAgainEndsWhereTheNewFrameSawPastIt) {
   appendLine(again, {0.6, 3.0}, {1.0, 3.0});  // beyond x = 0.3: a door open now
   memory.forget(kOrigin, at(1.0));
   memory.remember(again, usableReturns(again), kOrigin, at(1.0));
-  EXPECT_FALSE(memory.seenThrough(kOrigin, {0.9, 2.0}, at(1.0)));  // through the doorway
-  EXPECT_TRUE(memory.seenThrough(kOrigin, {-0.5, 3.0}, at(1.0)));
+  EXPECT_FALSE(memory.liesBeyondASurface(kOrigin, {0.9, 2.0}, at(1.0)));  // through the doorway
+  EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {-0.5, 3.0}, at(1.0)));
 }
 
 }  // namespace

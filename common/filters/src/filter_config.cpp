@@ -58,12 +58,13 @@ void readSurfaceMemory(const YamlSection& parent, SurfaceMemoryParams& m) {
   YamlSection s(parent.node(), "surface_memory", parent.file(), parent.path());
   s.read("lifetime", m.lifetime);
   s.read("min_interval", m.min_interval);
-  s.read("min_incidence_deg", m.min_incidence_deg);
-  s.read("behind_margin", m.behind_margin);
-  s.read("behind_margin_per_m", m.behind_margin_per_m);
+  s.read("min_beam_surface_angle_deg", m.min_beam_surface_angle_deg);
+  s.read("surface_margin", m.surface_margin);
+  s.read("surface_margin_per_m", m.surface_margin_per_m);
   s.read("end_margin", m.end_margin);
   s.read("merge_angle_deg", m.merge_angle_deg);
   s.read("merge_offset", m.merge_offset);
+  s.read("max_segments", m.max_segments);
   s.read("max_spacing", m.segments.max_spacing);
   s.read("max_deviation", m.segments.max_deviation);
   s.read("min_returns", m.segments.min_returns);
@@ -71,12 +72,14 @@ void readSurfaceMemory(const YamlSection& parent, SurfaceMemoryParams& m) {
   s.read("end_step", m.segments.end_step);
   s.requireRange("lifetime", m.lifetime, 0.0, 1e6, "a value >= 0 (s; 0: off)");
   s.requireRange("min_interval", m.min_interval, 0.0, 60.0, "0 <= value <= 60 (s)");
-  s.requireRange("min_incidence_deg", m.min_incidence_deg, 0.0, 90.0, "0 <= value <= 90 (degrees)");
-  s.requireRange("behind_margin", m.behind_margin, 0.0, 10.0, "0 <= value <= 10 (m)");
-  s.requireRange("behind_margin_per_m", m.behind_margin_per_m, 0.0, 1.0, "0 <= value <= 1 (m per m)");
+  s.requireRange("min_beam_surface_angle_deg", m.min_beam_surface_angle_deg, 0.0, 90.0,
+                 "0 <= value <= 90 (degrees; 90: head-on only)");
+  s.requireRange("surface_margin", m.surface_margin, 1e-3, 10.0, "0.001 <= value <= 10 (m; returns on the surface must not count)");
+  s.requireRange("surface_margin_per_m", m.surface_margin_per_m, 0.0, 1.0, "0 <= value <= 1 (m per m)");
   s.requireRange("end_margin", m.end_margin, 0.0, 10.0, "0 <= value <= 10 (m)");
   s.requireRange("merge_angle_deg", m.merge_angle_deg, 0.0, 45.0, "0 <= value <= 45 (degrees)");
   s.requireRange("merge_offset", m.merge_offset, 0.0, 10.0, "0 <= value <= 10 (m)");
+  s.requireRange("max_segments", static_cast<double>(m.max_segments), 1, 1e7, "an integer >= 1");
   s.requireRange("max_spacing", m.segments.max_spacing, 1e-3, 10.0, "0.001 <= value <= 10 (m)");
   s.requireRange("max_deviation", m.segments.max_deviation, 0.0, 1.0, "0 <= value <= 1 (m)");
   s.requireRange("min_returns", m.segments.min_returns, 2, 1e6, "an integer >= 2 (two returns make a line)");

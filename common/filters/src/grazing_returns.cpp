@@ -1,7 +1,6 @@
 #include "scanfilter/grazing_returns.hpp"
 
 #include <cmath>
-#include <numbers>
 
 #include "scanfilter/scan_geometry.hpp"
 
@@ -12,7 +11,7 @@ BeamMask returnsAtGrazingIncidence(const std::vector<Eigen::Vector2d>& points, c
   BeamMask grazing(points.size());
   if (!(max_angle_deg > 0.0) || !(std::abs(angle_step) > 0.0)) return grazing;
   const std::size_t span = beamsSpanning(kSurfaceSpanDeg, angle_step, points.size());  // beams either side
-  const double sin_max = std::sin(max_angle_deg * std::numbers::pi / 180.0);
+  const double sin_max = std::sin(degreesToRadians(max_angle_deg));
   for (std::size_t i = 0; i < points.size(); ++i) {
     const auto surface = localSurfaceDirection(points, i, tolerance, span);
     if (!surface) continue;

@@ -3,18 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
+
+#include "scanfilter/scan_geometry.hpp"
 
 namespace scanfilter {
 
-namespace {
-double degToRad(double deg) { return deg * std::numbers::pi / 180.0; }
-}  // namespace
-
 JumpClusterRule::JumpClusterRule(const JumpFilterParams& params)
     : params_(params),
-      radius_per_metre_(2.0 * std::sin(degToRad(params.angular_accuracy_deg)) * params.alpha /
-                        std::cos(degToRad(params.theta_k_deg))) {}
+      radius_per_metre_(2.0 * std::sin(degreesToRadians(params.angular_accuracy_deg)) * params.alpha /
+                        std::cos(degreesToRadians(params.theta_k_deg))) {}
 
 double JumpClusterRule::maxRadiusPerMetre(double range_lo, double range_hi) const {
   // σ(d)/d = base/d + quadratic·d is convex in d: its largest value over an

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <numeric>
 
 #include "scanfilter/scan_geometry.hpp"
@@ -64,7 +63,7 @@ const std::vector<std::uint32_t>& StraightRunJoin::join(std::span<const Eigen::V
   if (!params_.straight_runs || points.size() < 3) return parent_;
   returns_ = WrappedReturns(points, ranges, full_turn);
   // A surface at incidence ι puts consecutive returns range·Δθ / cos ι apart.
-  const double incidence = params_.straight_run_max_incidence_deg * std::numbers::pi / 180.0;
+  const double incidence = degreesToRadians(params_.straight_run_max_incidence_deg);
   gap_per_metre_ = std::abs(angle_increment) / std::cos(incidence);
   min_sin_to_beam_ = std::cos(incidence);
   const auto n = static_cast<std::int64_t>(points.size());

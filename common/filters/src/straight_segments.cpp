@@ -29,7 +29,8 @@ void fitPiece(std::span<const Eigen::Vector2d> piece, std::span<const Eigen::Vec
   const Eigen::Vector2d direction = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(scatter).eigenvectors().col(1);
   const Eigen::Vector2d a = mean + direction * direction.dot(piece.front() - mean);
   const Eigen::Vector2d b = mean + direction * direction.dot(piece.back() - mean);
-  if ((b - a).norm() < params.min_length) return;
+  const double length = (b - a).norm();
+  if (!(length > 0.0) || length < params.min_length) return;  // a segment has a direction
   out.push_back({a, b, static_cast<int>(piece.size()), piece.data() == whole.data(),
                  piece.data() + piece.size() == whole.data() + whole.size()});
 }

@@ -43,7 +43,10 @@ class PenetrationFilter {
 
   // Judges `scan` against the current grid (aligned to it first, when
   // alignment is on) without changing any state: no cache update, no expiry,
-  // no warm-up count. apply() is reset check, expiry, judge() and caching.
+  // no warm-up count, nothing remembered or forgotten. apply() is reset
+  // check, expiry (of the cache and of the surface memory, where the sensor
+  // drove through a remembered surface too), judge(), remembering and
+  // caching: judge() ignores expired surfaces but not driven-through ones.
   void judge(const Scan& scan, const SensorInfo& sensor, std::span<std::uint8_t> labels);
 
   // Forget every cached frame and start the warm-up again.

@@ -25,7 +25,7 @@ struct StraightSegment {
 
 struct StraightSegmentParams {
   double max_spacing = 0.15;    // m, neighbouring returns farther apart break a run
-  double max_deviation = 0.03;  // m, a run is split at the return farthest off its chord, if this far
+  double max_deviation = 0.03;  // m, a run is split at the return farthest off its chord, if farther
   int min_returns = 6;          // fewer make no segment
   double min_length = 0.30;     // m, shorter make no segment
   double end_step = 0.15;       // m, see StraightSegment::a_seen_past

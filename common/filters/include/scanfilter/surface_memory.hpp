@@ -1,7 +1,7 @@
 #pragma once
+#include <cstddef>
 #include <optional>
 #include <span>
-#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -15,31 +15,35 @@ namespace scanfilter {
 // Parameters of the surface memory (config/filter.yaml, penetration_filter:
 // surface_memory, documents each; docs/accuracy.md, Beyond the paper 24).
 struct SurfaceMemoryParams {
-  double lifetime = 20.0;           // s a surface not seen again is remembered; 0: off
-  double min_interval = 0.25;       // s between frames whose surfaces are remembered
-  double min_incidence_deg = 45.0;  // degrees, surfaces seen at a shallower angle are not remembered
-  double behind_margin = 0.20;      // m, a return must lie this far beyond a remembered line
-  double behind_margin_per_m = 0.02;  // m per m of range added to it
-  double end_margin = 0.10;         // m, a beam crossing a remembered segment this near its end does not count
-  double merge_angle_deg = 10.0;    // degrees, a surface seen again: directions within this
-  double merge_offset = 0.30;       // m, ... and the new segment's ends this near the remembered line
+  double lifetime = 20.0;                   // s a stretch of surface not seen again is remembered; 0: off
+  double min_interval = 0.25;               // s between frames whose surfaces are remembered
+  double min_beam_surface_angle_deg = 45.0;  // surfaces the beam meets at a shallower angle are not remembered
+  double surface_margin = 0.20;             // m, a return this near a remembered line lies on it
+  double surface_margin_per_m = 0.02;       // m per m of range added to it
+  double end_margin = 0.10;                 // m, a beam crossing a segment this near a seen end does not count
+  double merge_angle_deg = 10.0;            // degrees, a surface seen again: directions within this
+  double merge_offset = 0.30;               // m, ... and the new segment's ends this near the remembered line
+  std::size_t max_segments = 2000;          // the oldest go first beyond this (stamps that do not advance)
   StraightSegmentParams segments;
 };
 
 // Beyond the paper: the flat surfaces that judged frames saw well, remembered
 // longer than step 2's cache. Mirrors and panes return directly only near
-// normal incidence, so the cache often no longer holds the one behind a
+// normal incidence, so the cache often no longer holds the one in front of a
 // ghost; a segment does not thicken as cells do (docs/accuracy.md, "Where
 // step 2 loses"). A kept return that lies beyond a remembered segment, on
 // the far side of its line from the sensor by more than the margin, with the
 // beam crossing the segment inside its ends, was seen through a surface.
 //
-// What is remembered: segments of the kept returns, seen at `min_incidence_deg`
-// or steeper (no grazing walls, whose returns are displaced, and no trails of
-// mixed returns, which run along the beam). A surface seen again replaces
-// what was remembered of it: the newest frame puts it where it is now
-// (drifting odometry moves old segments), over the extent of both, except
-// past an end the new frame saw past. A segment the sensor's path crosses is
+// What is remembered: segments of the kept returns that the beam to their
+// middle meets at `min_beam_surface_angle_deg` or more (no grazing walls,
+// whose returns are displaced, and no trails of mixed returns, which run
+// along the beam). A surface seen again replaces what was remembered of it:
+// the newest frame puts it where it is now (drifting odometry moves old
+// segments). Over the stretch the new frame saw, the segment is as new; the
+// remembered stretches beyond it stay, on the new line, as old as they were
+// (a door that opens is remembered closed until they expire), except past an
+// end the new frame saw past. A segment the sensor's path crosses is
 // forgotten: nothing solid stood there.
 class SurfaceMemory {
  public:
@@ -47,13 +51,13 @@ class SurfaceMemory {
 
   bool enabled() const { return params_.lifetime > 0.0; }
   void clear();
-  // Forgets what is older than the lifetime, and what the sensor's path
-  // since the last call crossed.
+  // Forgets what was last seen more than the lifetime before `now`, and
+  // what the sensor's path since the last call crossed.
   void forget(const Eigen::Vector2d& origin, Stamp now);
   // True when the return at p, seen from origin at `now`, lies beyond a
-  // remembered surface (one seen again within the lifetime: judging without
+  // remembered surface (one seen within the lifetime: judging without
   // forgetting first still ignores older ones).
-  bool seenThrough(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now) const;
+  bool liesBeyondASurface(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now) const;
   // Remembers the straight surfaces of one frame's usable returns.
   void remember(std::span<const Eigen::Vector2d> points, const BeamMask& usable, const Eigen::Vector2d& origin,
                 Stamp stamp);
@@ -66,15 +70,29 @@ class SurfaceMemory {
     Eigen::Vector2d normal;  // unit, to its left
     double length = 0.0;
     Eigen::Vector2d lo, hi;  // bounding box
-    Stamp stamp;             // when it was last seen
+    Stamp last_seen;
+    // How far inside each end (a, then the other) a beam must cross it:
+    // end_margin at an end a frame saw, 0 where it joins a stretch seen at
+    // another time.
+    double margin_a = 0.0;
+    double margin_b = 0.0;
   };
-  static Segment segmentBetween(const Eigen::Vector2d& a, const Eigen::Vector2d& b, Stamp stamp);
-  std::vector<Segment> freshSegments(std::span<const Eigen::Vector2d> points, const BeamMask& usable,
-                                     const Eigen::Vector2d& origin, Stamp stamp,
-                                     std::vector<std::pair<bool, bool>>& seen_past) const;
+  // A segment of the judged frame and whether the frame saw past its ends.
+  struct Fresh {
+    Segment segment;
+    bool a_seen_past = false;
+    bool b_seen_past = false;
+  };
+  Segment segmentBetween(const Eigen::Vector2d& a, const Eigen::Vector2d& b, Stamp last_seen, double margin_a,
+                         double margin_b) const;
+  std::vector<Fresh> freshSegments(std::span<const Eigen::Vector2d> points, const BeamMask& usable,
+                                   const Eigen::Vector2d& origin, Stamp stamp) const;
   bool seenAgain(const Segment& now, const Segment& old) const;
-  Segment merged(const Segment& now, std::pair<bool, bool> seen_past, const std::vector<Segment>& olds) const;
-  bool crosses(const Segment& s, const Eigen::Vector2d& origin, const Eigen::Vector2d& p, double margin) const;
+  // The new segment and what is remembered beyond it, on one line.
+  std::vector<Segment> merged(const Fresh& now, const std::vector<Segment>& olds) const;
+  bool beamPassesThrough(const Segment& s, const Eigen::Vector2d& origin, const Eigen::Vector2d& p,
+                         double surface_margin) const;
+  void keepWithinBound();
 
   SurfaceMemoryParams params_;
   std::vector<Segment> segments_;

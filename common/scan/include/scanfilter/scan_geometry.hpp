@@ -1,5 +1,6 @@
 #pragma once
 #include <cassert>
+#include <numbers>
 #include <optional>
 #include <span>
 #include <vector>
@@ -66,6 +67,9 @@ Eigen::AlignedBox2d returnBounds(std::span<const Eigen::Vector2d> points);
 // a.x·b.y - a.y·b.x: the z of the cross product of two vectors of the plane
 // (|a|·|b|·sin of the angle from a to b).
 inline double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// Angles in configuration files are degrees; the geometry works in radians.
+inline constexpr double degreesToRadians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
 // Distance of p from the line through a and b (from a when they coincide).
 double distanceToLine(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
