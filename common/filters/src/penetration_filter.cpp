@@ -329,9 +329,11 @@ void PenetrationFilter::markSeenThrough(const Scan& scan, const Eigen::Vector2d&
 
 void PenetrationFilter::markBeyondRememberedSurfaces(Stamp stamp, const Eigen::Vector2d& origin,
                                                      std::span<std::uint8_t> labels) const {
-  for (std::size_t i = 0; i < labels.size(); ++i)
-    if (labels[i] == static_cast<std::uint8_t>(PointCode::kValid) && memory_.liesBeyondASurface(origin, points_[i], stamp))
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid)) continue;
+    if (memory_.liesBeyondASurface(origin, points_[i], stamp))
       labels[i] = static_cast<std::uint8_t>(PointCode::kMisdetected);
+  }
 }
 
 // --- Reference ---------------------------------------------------------------

@@ -13,7 +13,6 @@
 #include "scanfilter/beam_mask.hpp"
 #include "scanfilter/edge_smear_zone.hpp"
 #include "scanfilter/frame_alignment.hpp"
-#include "scanfilter/surface_memory.hpp"
 #include "scanfilter/free_space_check.hpp"
 #include "scanfilter/implementation.hpp"
 #include "scanfilter/obstacle_window.hpp"
@@ -25,6 +24,7 @@
 #include "scanfilter/scan.hpp"
 #include "scanfilter/scan_geometry.hpp"
 #include "scanfilter/sensor_info.hpp"
+#include "scanfilter/surface_memory.hpp"
 
 namespace scanfilter {
 
@@ -153,7 +153,8 @@ class PenetrationFilter {
   void markSeenThrough(const Scan& scan, const Eigen::Vector2d& origin, std::span<std::uint8_t> labels);
   // surface_memory: kept returns beyond a remembered surface become
   // misdetected (points_ and `origin` placed as judged).
-  void markBeyondRememberedSurfaces(Stamp stamp, const Eigen::Vector2d& origin, std::span<std::uint8_t> labels) const;
+  void markBeyondRememberedSurfaces(Stamp stamp, const Eigen::Vector2d& origin,
+                                    std::span<std::uint8_t> labels) const;
   // With rescue_min_baseline: the cached frames taken at least that far from
   // `origin` join the evidence; all of them while none is.
   void admitEvidence(const Eigen::Vector2d& origin);
