@@ -245,7 +245,7 @@ void BM_PenetrationStream(benchmark::State& state) {
   const HallTour& tour = hallTour(beams);
   PenetrationFilterParams params = tour.params;
   params.free_space_check = state.range(2) != 0;  // its cost: the same stream without it
-  if (state.range(3) == 0) params.surface_memory.lifetime = 0.0;  // the same
+  if (state.range(3) == 0) params.surface_memory.lifetime = 0.0;  // the memory's cost, likewise
   auto filter = makePenetrationFilter(params, Implementation::kFast);
   std::vector<std::uint8_t> labels;
   std::size_t next = 0;

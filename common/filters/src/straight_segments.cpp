@@ -5,16 +5,11 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "scanfilter/scan_geometry.hpp"
+
 namespace scanfilter {
 
 namespace {
-
-double distanceToChord(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  const Eigen::Vector2d ab = b - a;
-  const double length = ab.norm();
-  if (length == 0.0) return (p - a).norm();
-  return std::abs(ab.x() * (p.y() - a.y()) - ab.y() * (p.x() - a.x())) / length;
-}
 
 // `whole`: the run that `piece` was split from. The ends a piece shares with
 // it are marked as such; whether the frame saw past them is for the caller.
@@ -31,8 +26,7 @@ void fitPiece(std::span<const Eigen::Vector2d> piece, std::span<const Eigen::Vec
   const Eigen::Vector2d b = mean + direction * direction.dot(piece.back() - mean);
   const double length = (b - a).norm();
   if (!(length > 0.0) || length < params.min_length) return;  // a segment has a direction
-  out.push_back({a, b, static_cast<int>(piece.size()), piece.data() == whole.data(),
-                 piece.data() + piece.size() == whole.data() + whole.size()});
+  out.push_back({a, b, piece.data() == whole.data(), piece.data() + piece.size() == whole.data() + whole.size()});
 }
 
 void splitAndFit(std::span<const Eigen::Vector2d> piece, std::span<const Eigen::Vector2d> whole,
@@ -41,7 +35,7 @@ void splitAndFit(std::span<const Eigen::Vector2d> piece, std::span<const Eigen::
   std::size_t farthest = 0;
   double farthest_off = 0.0;
   for (std::size_t k = 1; k + 1 < piece.size(); ++k) {
-    const double off = distanceToChord(piece[k], piece.front(), piece.back());
+    const double off = distanceToLine(piece[k], piece.front(), piece.back());
     if (off > farthest_off) farthest_off = off, farthest = k;
   }
   if (farthest_off > params.max_deviation) {  // a corner: both sides keep it

@@ -7,17 +7,12 @@
 
 namespace scanfilter {
 
-namespace {
-// Where the line from p0 to p1 crosses the line of a segment (`a` on it,
-// `normal` across it), as a fraction of the way from p0; nullopt when both
-// lie on one side.
-std::optional<double> crossingFraction(const Eigen::Vector2d& a, const Eigen::Vector2d& normal,
-                                       const Eigen::Vector2d& p0, const Eigen::Vector2d& p1) {
+std::optional<double> SurfaceMemory::Segment::crossingAlong(const Eigen::Vector2d& p0,
+                                                            const Eigen::Vector2d& p1) const {
   const double d0 = normal.dot(p0 - a), d1 = normal.dot(p1 - a);
   if ((d0 > 0.0) == (d1 > 0.0)) return std::nullopt;
-  return d0 / (d0 - d1);
+  return unit.dot(p0 + (p1 - p0) * (d0 / (d0 - d1)) - a);
 }
-}  // namespace
 
 void SurfaceMemory::clear() {
   segments_.clear();
@@ -30,10 +25,8 @@ void SurfaceMemory::forget(const Eigen::Vector2d& origin, Stamp now) {
   if (last_origin_) {
     const Eigen::Vector2d from = *last_origin_;
     std::erase_if(segments_, [&](const Segment& s) {
-      const std::optional<double> t = crossingFraction(s.a, s.normal, from, origin);
-      if (!t) return false;
-      const double along = s.unit.dot(from + (origin - from) * *t - s.a);
-      return along >= 0.0 && along <= s.length;
+      const std::optional<double> along = s.crossingAlong(from, origin);
+      return along && *along >= 0.0 && *along <= s.length;
     });
   }
   last_origin_ = origin;
@@ -41,11 +34,10 @@ void SurfaceMemory::forget(const Eigen::Vector2d& origin, Stamp now) {
 
 bool SurfaceMemory::beamPassesThrough(const Segment& s, const Eigen::Vector2d& origin, const Eigen::Vector2d& p,
                                       double surface_margin) const {
-  const std::optional<double> t = crossingFraction(s.a, s.normal, origin, p);
   // A return near the line lies on the surface (noise, pose error).
-  if (!t || std::abs(s.normal.dot(p - s.a)) < surface_margin) return false;
-  const double along = s.unit.dot(origin + (p - origin) * *t - s.a);
-  return along > s.margin_a && along < s.length - s.margin_b;
+  if (std::abs(s.normal.dot(p - s.a)) < surface_margin) return false;
+  const std::optional<double> along = s.crossingAlong(origin, p);
+  return along && *along > s.margin_a && *along < s.length - s.margin_b;
 }
 
 bool SurfaceMemory::liesBeyondASurface(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now) const {
@@ -81,11 +73,10 @@ std::vector<SurfaceMemory::Fresh> SurfaceMemory::freshSegments(std::span<const E
 
 bool SurfaceMemory::seenAgain(const Segment& now, const Segment& old) const {
   if (std::abs(now.unit.dot(old.unit)) < std::cos(degreesToRadians(params_.merge_angle_deg))) return false;
-  const Eigen::Vector2d now_b = now.a + now.unit * now.length;
   if (std::abs(old.normal.dot(now.a - old.a)) > params_.merge_offset ||
-      std::abs(old.normal.dot(now_b - old.a)) > params_.merge_offset)
+      std::abs(old.normal.dot(now.b() - old.a)) > params_.merge_offset)
     return false;
-  const double t0 = old.unit.dot(now.a - old.a), t1 = old.unit.dot(now_b - old.a);
+  const double t0 = old.unit.dot(now.a - old.a), t1 = old.unit.dot(now.b() - old.a);
   return std::min(std::max(t0, t1), old.length) > std::max(std::min(t0, t1), 0.0);  // they overlap
 }
 
@@ -98,13 +89,13 @@ std::vector<SurfaceMemory::Segment> SurfaceMemory::merged(const Fresh& fresh, co
   for (const Segment& old : olds) direction += (old.unit.dot(now.unit) >= 0.0 ? old.unit : -old.unit) * old.length;
   direction.normalize();
   const Eigen::Vector2d middle = now.a + now.unit * (now.length / 2);
-  const double now_a = direction.dot(now.a - middle), now_b = direction.dot(now.a + now.unit * now.length - middle);
+  const double now_a = direction.dot(now.a - middle), now_b = direction.dot(now.b() - middle);
   const double seen_lo = std::min(now_a, now_b), seen_hi = std::max(now_a, now_b);
   double lo = seen_lo, hi = seen_hi;
   Stamp remembered = olds.front().last_seen;
   for (const Segment& old : olds) {
     remembered = std::max(remembered, old.last_seen);
-    for (const Eigen::Vector2d& end : {old.a, Eigen::Vector2d(old.a + old.unit * old.length)}) {
+    for (const Eigen::Vector2d& end : {old.a, old.b()}) {
       lo = std::min(lo, direction.dot(end - middle));
       hi = std::max(hi, direction.dot(end - middle));
     }

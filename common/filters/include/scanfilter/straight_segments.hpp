@@ -14,7 +14,6 @@ namespace scanfilter {
 struct StraightSegment {
   Eigen::Vector2d a;
   Eigen::Vector2d b;
-  int returns = 0;
   // Whether the frame saw past the end at a (at b): the next beam's return,
   // a usable one, lies farther from the sensor by more than
   // StraightSegmentParams::end_step, so the surface ends there rather than

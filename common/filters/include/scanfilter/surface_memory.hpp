@@ -76,6 +76,11 @@ class SurfaceMemory {
     // another time.
     double margin_a = 0.0;
     double margin_b = 0.0;
+
+    Eigen::Vector2d b() const { return a + unit * length; }
+    // Where the line from p0 to p1 crosses this segment's line, as a
+    // distance along it from a; nullopt when both lie on one side.
+    std::optional<double> crossingAlong(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1) const;
   };
   // A segment of the judged frame and whether the frame saw past its ends.
   struct Fresh {
