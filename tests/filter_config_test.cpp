@@ -55,6 +55,9 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(s.penetration.free_space_dip, d.penetration.free_space_dip);
   EXPECT_EQ(s.penetration.free_space_min_frames, d.penetration.free_space_min_frames);
   EXPECT_EQ(s.penetration.free_space_veto_count, d.penetration.free_space_veto_count);
+  EXPECT_EQ(s.penetration.thin_object_check, d.penetration.thin_object_check);
+  EXPECT_EQ(s.penetration.thin_object_max_beams, d.penetration.thin_object_max_beams);
+  EXPECT_EQ(s.penetration.thin_object_radius, d.penetration.thin_object_radius);
   EXPECT_EQ(s.penetration.free_space_margin_per_m, d.penetration.free_space_margin_per_m);
   EXPECT_EQ(s.jump.noise_estimate, d.jump.noise_estimate);
   EXPECT_EQ(s.jump.noise_estimate_window_scans, d.jump.noise_estimate_window_scans);
@@ -85,6 +88,7 @@ TEST(FilterConfig, PaperLiteralPresetLoads) {
   EXPECT_DOUBLE_EQ(paper.params.penetration.behind_margin, 0.1);
   EXPECT_FALSE(paper.params.penetration.rescue_persistent_points);
   EXPECT_FALSE(paper.params.penetration.free_space_check);
+  EXPECT_FALSE(paper.params.penetration.thin_object_check);
   EXPECT_EQ(paper.params.penetration.surface_memory.lifetime, 0.0) << "no memory beyond T_max";
   EXPECT_FALSE(paper.params.jump.noise_estimate) << "the paper has no noise model";
   EXPECT_FALSE(paper.params.jump.keep_foreground_clusters) << "eq. 7 as printed deletes every lone return";
@@ -124,6 +128,8 @@ TEST(FilterConfigErrors, NameFileLineAndKey) {
             "f.yaml:3: penetration_filter.surface_memory.behind_margin: unknown key");
   EXPECT_EQ(errorOf("penetration_filter:\n  free_space_veto_count: 0\n"),
             "f.yaml:2: penetration_filter.free_space_veto_count: expected an integer >= 1");
+  EXPECT_EQ(errorOf("penetration_filter:\n  thin_object_max_beams: 0\n"),
+            "f.yaml:2: penetration_filter.thin_object_max_beams: expected an integer >= 1");
   EXPECT_EQ(errorOf("penetration_filter:\n  cache_min_interval: -0.1\n"),
             "f.yaml:2: penetration_filter.cache_min_interval: expected 0 <= value <= 10 (s; 0: every frame)");
   EXPECT_EQ(errorOf("penetration_filter:\n  free_space_margin_per_m: -0.01\n"),

@@ -153,6 +153,9 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.read("free_space_dip", p.free_space_dip);
   s.read("free_space_min_frames", p.free_space_min_frames);
   s.read("free_space_veto_count", p.free_space_veto_count);
+  s.read("thin_object_check", p.thin_object_check);
+  s.read("thin_object_max_beams", p.thin_object_max_beams);
+  s.read("thin_object_radius", p.thin_object_radius);
   s.take("alignment");
   readAlignment(s, p.alignment);
   s.take("surface_memory");
@@ -185,6 +188,8 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.requireRange("free_space_min_frames", p.free_space_min_frames, 1, static_cast<double>(p.max_cache_frames),
                  "an integer from 1 to max_cache_frames");
   s.requireRange("free_space_veto_count", p.free_space_veto_count, 1, 1e9, "an integer >= 1");
+  s.requireRange("thin_object_max_beams", p.thin_object_max_beams, 1, 1e6, "an integer >= 1");
+  s.requireRange("thin_object_radius", p.thin_object_radius, 0.0, 1.0, "0 <= value <= 1 (m)");
   s.rejectUnknownKeys();
 }
 

@@ -41,6 +41,7 @@ PenetrationFilter::PenetrationFilter(const PenetrationFilterParams& params)
       evidence_(params.cell_size),  // the same cells as grid_: a frame's runs go into both
       aligner_(params.alignment),
       free_space_(params),
+      thin_objects_(params.edge_depth_step, params.thin_object_radius),
       memory_(params.surface_memory) {}
 
 void PenetrationFilter::reset() {
@@ -205,6 +206,7 @@ PenetrationFilter::Judgement PenetrationFilter::alignAndJudge(const Scan& scan, 
   findSurfaceEnds(scan);
   judgePoints(origin, labels);
   if (params_.free_space_check) markSeenThrough(scan, origin, labels);
+  if (params_.thin_object_check) markMixedReturnsOfThinObjects(scan, origin, labels);
   if (memory_.enabled()) markBeyondRememberedSurfaces(scan.stamp, origin, labels);
   out.judged = true;
   out.origin = origin;
@@ -325,6 +327,46 @@ void PenetrationFilter::markSeenThrough(const Scan& scan, const Eigen::Vector2d&
     }
     if (free_space_.seenThrough(through, hits)) labels[i] = static_cast<std::uint8_t>(PointCode::kJump);
   }
+}
+
+void PenetrationFilter::markMixedReturnsOfThinObjects(const Scan& scan, const Eigen::Vector2d& origin,
+                                                      std::span<std::uint8_t> labels) const {
+  const BeamMask lone = inFrontOfBothSides(scan, static_cast<std::size_t>(params_.thin_object_max_beams),
+                                           params_.edge_depth_step);
+  const double angle_step = std::abs(scan.angle_increment);
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid) || !lone[i]) continue;
+    if (objectInFootprint(origin, points_[i], angle_step)) labels[i] = static_cast<std::uint8_t>(PointCode::kJump);
+  }
+}
+
+bool PenetrationFilter::objectInFootprint(const Eigen::Vector2d& origin, const Eigen::Vector2d& p,
+                                          double angle_step) const {
+  // Stretch by stretch along the beam, each boxed with the footprint's width
+  // there: the cells visited follow the beam, not the box around all of it.
+  constexpr double kStretch = 0.5;  // m, ten cells of 5 cm
+  const Eigen::Vector2d beam = p - origin;
+  const double length = beam.norm();
+  const double reach = length - thin_objects_.depthStep();
+  if (!(reach > 0.0)) return false;
+  const Eigen::Vector2d unit = beam / length;
+  for (double from = 0.0; from < reach; from += kStretch) {
+    const double to = std::min(reach, from + kStretch);
+    const Eigen::Vector2d a = origin + unit * from;
+    const Eigen::Vector2d b = origin + unit * to;
+    // An obstacle's position lies in its cell, so the cells of the box hold
+    // every position within it.
+    const double pad = thin_objects_.halfWidthAt(to, angle_step);
+    bool found = false;
+    grid_.forEachObstacleIn(grid_.cellOf(a.cwiseMin(b).array() - pad), grid_.cellOf(a.cwiseMax(b).array() + pad),
+                            [&](CellIndex c) {
+                              if (found) return;
+                              const Eigen::Vector2d q = obstaclePosition(c);
+                              found = countsAsObstacle(q) && thin_objects_.inFootprintInFront(origin, p, q, angle_step);
+                            });
+    if (found) return true;
+  }
+  return false;
 }
 
 void PenetrationFilter::markBeyondRememberedSurfaces(Stamp stamp, const Eigen::Vector2d& origin,

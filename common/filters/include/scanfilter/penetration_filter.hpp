@@ -25,6 +25,7 @@
 #include "scanfilter/scan_geometry.hpp"
 #include "scanfilter/sensor_info.hpp"
 #include "scanfilter/surface_memory.hpp"
+#include "scanfilter/thin_object_check.hpp"
 
 namespace scanfilter {
 
@@ -151,6 +152,14 @@ class PenetrationFilter {
   // free_space_check: kept returns that far cached frames looked through
   // become jump points (points_ and `origin` placed as judged).
   void markSeenThrough(const Scan& scan, const Eigen::Vector2d& origin, std::span<std::uint8_t> labels);
+  // thin_object_check: kept returns standing in front of both sides with a
+  // cached object in their footprint, in front of them, become jump points
+  // (points_ and `origin` placed as judged).
+  void markMixedReturnsOfThinObjects(const Scan& scan, const Eigen::Vector2d& origin,
+                                     std::span<std::uint8_t> labels) const;
+  // Whether an obstacle cell that counts as one puts an object in the
+  // footprint of the beam from `origin` to p, in front of p.
+  bool objectInFootprint(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, double angle_step) const;
   // surface_memory: kept returns beyond a remembered surface become
   // misdetected (points_ and `origin` placed as judged).
   void markBeyondRememberedSurfaces(Stamp stamp, const Eigen::Vector2d& origin,
@@ -174,6 +183,7 @@ class PenetrationFilter {
   std::size_t resets_ = 0;
   FrameAligner aligner_;
   FreeSpaceCheck free_space_;
+  ThinObjectCheck thin_objects_;
   SurfaceMemory memory_;
   EdgeSmearZone smear_zone_;
   std::vector<Eigen::Vector2d> surface_ends_;  // the frame's ends: smear_zone_'s, and the fast walk's to erase

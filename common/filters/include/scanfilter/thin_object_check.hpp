@@ -1,0 +1,58 @@
+#pragma once
+#include <Eigen/Core>
+
+#include "scanfilter/beam_mask.hpp"
+#include "scanfilter/scan.hpp"
+
+namespace scanfilter {
+
+// Beyond the paper (docs/accuracy.md, Beyond the paper 25): the mixed return
+// of an object thinner than the beam's footprint, a chair or table leg. The
+// footprint falls partly on the object and partly on the background behind
+// it, and the sensor reports a range between the two: a lone return in
+// front of both neighbouring beams, far from any surface. A real thin leg
+// looks the same in one scan, so step 1 keeps it (keep_foreground_clusters).
+// The cache tells them apart: when its obstacle cells put an object on the
+// beam, more than a depth step in front of the return and close enough to
+// the beam's axis to lie in its footprint, the beam's light came partly from
+// that object, and the return lies where nothing is.
+class ThinObjectCheck {
+ public:
+  // depth_step: how much nearer than the return the object must be (and how
+  // much farther both neighbours are: a depth edge, not a surface's noise);
+  // object_radius: how far an object's position (the mean of its cached
+  // returns) may lie from the edge of the footprint it reaches into.
+  ThinObjectCheck(double depth_step, double object_radius)
+      : depth_step_(depth_step), object_radius_(object_radius) {}
+
+  // The footprint is taken as one angular step wide: a triangulation
+  // scanner sweeps its spot over the step while it measures, and beams
+  // placed a step apart leave no gaps. (A time-of-flight spot is wider, so
+  // some of its mixed returns are missed; none is marked wrongly for it.)
+  double halfWidthAt(double distance, double angle_step) const {
+    return object_radius_ + 0.5 * distance * angle_step;
+  }
+
+  // Whether obstacle position q, seen from `origin`, is an object in the
+  // footprint of the beam to p, in front of p by more than the depth step.
+  bool inFootprintInFront(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, const Eigen::Vector2d& q,
+                          double angle_step) const;
+
+  // How far short of p along its beam an object must end: the walk's reach.
+  double depthStep() const { return depth_step_; }
+
+ private:
+  double depth_step_;     // m
+  double object_radius_;  // m
+};
+
+// Returns standing in front of both sides: maximal runs of at most
+// `max_beams` returns, each within `depth_step` of the next, whose
+// neighbouring beams on both sides return farther by more than `depth_step`.
+// A neighbour without a return does not count as farther: with nothing
+// within range behind the object, no background light pulls the range back,
+// so the return is the object's own. Runs at either end of the scan are not
+// flagged (one side is unknown).
+BeamMask inFrontOfBothSides(const Scan& scan, std::size_t max_beams, double depth_step);
+
+}  // namespace scanfilter
