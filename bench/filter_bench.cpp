@@ -246,6 +246,7 @@ void BM_PenetrationStream(benchmark::State& state) {
   PenetrationFilterParams params = tour.params;
   params.free_space_check = state.range(2) != 0;  // its cost: the same stream without it
   if (state.range(3) == 0) params.surface_memory.lifetime = 0.0;  // the memory's cost, likewise
+  params.thin_object_check = state.range(4) != 0;                 // and the thin-object check's
   auto filter = makePenetrationFilter(params, Implementation::kFast);
   std::vector<std::uint8_t> labels;
   std::size_t next = 0;
@@ -281,12 +282,14 @@ BENCHMARK_CAPTURE(BM_PenetrationJudge, reference, Implementation::kReference)
     ->ArgsProduct({{360, 1080, 3600}, {100, 1000}})->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_PenetrationJudge, fast, Implementation::kFast)
     ->ArgsProduct({{360, 1080, 3600}, {100, 1000}})->Unit(benchmark::kMicrosecond);
-// The shipped step 2 warm and cold, and warm without the free-space check
-// or without the surface memory.
+// The shipped step 2 warm and cold, and warm without the free-space check,
+// without the surface memory or without the thin-object check.
 BENCHMARK(BM_PenetrationStream)
-    ->ArgNames({"beams", "cold", "free_space", "surface_memory"})
-    ->Args({360, 0, 1, 1})->Args({360, 1, 1, 1})->Args({360, 0, 0, 1})->Args({360, 0, 1, 0})
-    ->Args({3600, 0, 1, 1})->Args({3600, 1, 1, 1})->Args({3600, 0, 0, 1})->Args({3600, 0, 1, 0})
+    ->ArgNames({"beams", "cold", "free_space", "surface_memory", "thin_object"})
+    ->Args({360, 0, 1, 1, 1})->Args({360, 1, 1, 1, 1})->Args({360, 0, 0, 1, 1})->Args({360, 0, 1, 0, 1})
+    ->Args({360, 0, 1, 1, 0})
+    ->Args({3600, 0, 1, 1, 1})->Args({3600, 1, 1, 1, 1})->Args({3600, 0, 0, 1, 1})->Args({3600, 0, 1, 0, 1})
+    ->Args({3600, 0, 1, 1, 0})
     ->Unit(benchmark::kMicrosecond);
 
 BENCHMARK_MAIN();

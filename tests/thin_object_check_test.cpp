@@ -40,11 +40,20 @@ std::vector<int> flagged(const Scan& scan, std::size_t max_beams) {
   return out;
 }
 
-TEST(InFrontOfBothSides, ShortRunsWithFartherReturnsOnBothSides) {
+TEST(InFrontOfBothSides, ShortStretchesWithFartherReturnsOnBothSides) {
   EXPECT_EQ(flagged(scanOf({3, 3, 1, 3, 3}), 2), (std::vector<int>{2}));
   EXPECT_EQ(flagged(scanOf({3, 1.0, 1.1, 3, 3}), 2), (std::vector<int>{1, 2})) << "two returns of one object";
   EXPECT_EQ(flagged(scanOf({3, 1.0, 1.1, 1.0, 3}), 2), (std::vector<int>{})) << "three: longer than max_beams";
   EXPECT_EQ(flagged(scanOf({3, 1.0, 1.1, 1.0, 3}), 3), (std::vector<int>{1, 2, 3}));
+}
+
+// A leg at 1 m and beside it the mix of the leg and the wall behind at 2 m:
+// both stand in front of the wall on either side, the mixed return only
+// together with the leg.
+TEST(InFrontOfBothSides, AThinObjectWithItsMixedReturnBeside) {
+  EXPECT_EQ(flagged(scanOf({3, 3, 1, 2, 3, 3}), 2), (std::vector<int>{2, 3}));
+  EXPECT_EQ(flagged(scanOf({3, 3, 1, 2, 3, 3}), 1), (std::vector<int>{2})) << "the mixed return alone is beside the leg";
+  EXPECT_EQ(flagged(scanOf({3, 3, 1, 2.9, 3, 3}), 2), (std::vector<int>{2})) << "the stretch must stand in front as a whole";
 }
 
 TEST(InFrontOfBothSides, NotBetweenNotNearNotBesideNothing) {
@@ -79,12 +88,15 @@ TEST(ThinObjectCheck, AnObjectInTheFootprintInFrontOfTheReturn) {
 // valid (step 1 found nothing), so the cache holds the leg as an obstacle
 // cell. In the last frame the leg is not seen: the beam towards it reports
 // the leg's distance plus `beyond_leg` instead, its neighbours the wall
-// behind. Returns that beam's label from both implementations.
+// behind. In the first `earlier_there` frames (all 0.25 m+ from the last)
+// one beam ends where that return will lie, as a rear leg seen from
+// elsewhere would. Returns the last frame's label of that beam from both
+// implementations.
 struct LegBeam {
   std::uint8_t reference = 0, fast = 0;
 };
 
-LegBeam filterWithTheLegBeam(const PenetrationFilterParams& p, double beyond_leg) {
+LegBeam filterWithTheLegBeam(const PenetrationFilterParams& p, double beyond_leg, int earlier_there = 0) {
   const SensorInfo sensor = test::simpleSensor();
   const World room = World{}
                          .wall({3, -3}, {3, 3})
@@ -100,12 +112,23 @@ LegBeam filterWithTheLegBeam(const PenetrationFilterParams& p, double beyond_leg
   auto reference = makePenetrationFilter(p, Implementation::kReference);
   auto fast = makePenetrationFilter(p, Implementation::kFast);
   constexpr int kFrames = 16;
+  const auto poseOf = [](int k) { return Pose2{0.0, 0.05 * k, 0.0}; };
+  const Eigen::Vector2d last_at(0.0, poseOf(kFrames - 1).y);
+  const Eigen::Vector2d return_at =
+      last_at + (leg - last_at).normalized() * ((leg - last_at).norm() - kLegRadius + beyond_leg);
+  if (earlier_there > 0) {
+    EXPECT_GE(poseOf(kFrames - 1).y - poseOf(earlier_there - 1).y, p.rescue_min_baseline);
+  }
   LegBeam out;
   for (int k = 0; k < kFrames; ++k) {
-    const Pose2 pose{0.0, 0.05 * k, 0.0};
+    const Pose2 pose = poseOf(k);
     const bool last = k == kFrames - 1;
     Scan scan = castScan(last ? room : with_leg, pose, sensor, 360, 0.1 * k);
     const std::size_t leg_beam = test::beamTowards(scan, sensor, std::atan2(leg.y() - pose.y, leg.x()));
+    if (k < earlier_there) {
+      const Eigen::Vector2d to = return_at - Eigen::Vector2d(pose.x, pose.y);
+      scan.ranges[test::beamTowards(scan, sensor, std::atan2(to.y(), to.x()))] = to.norm();
+    }
     if (last) scan.ranges[leg_beam] = (leg - Eigen::Vector2d(pose.x, pose.y)).norm() - kLegRadius + beyond_leg;
     std::vector<std::uint8_t> labels(scan.size());
     for (std::size_t i = 0; i < scan.size(); ++i)
@@ -143,6 +166,18 @@ TEST(ThinObjectCheck, StepTwoRemovesTheMixedReturnBehindALeg) {
   PenetrationFilterParams off = p;
   off.thin_object_check = false;
   EXPECT_EQ(filterWithTheLegBeam(off, 1.0).fast, kValid) << "the paper's step 2 keeps it";
+}
+
+// Returns from elsewhere where the return lies (as many as the rescue needs
+// to restore a jump point) say an object stands there: a rear leg partly
+// behind a front one is kept.
+TEST(ThinObjectCheck, ReturnsFromElsewhereWhereItLiesKeepIt) {
+  const PenetrationFilterParams p = thinObjectsOnly();
+  ASSERT_EQ(p.rescue_min_count, 5);
+  const LegBeam kept = filterWithTheLegBeam(p, 1.0, 5);
+  EXPECT_EQ(kept.reference, kept.fast);
+  EXPECT_EQ(kept.fast, kValid) << "five returns from elsewhere vouch for an object there";
+  EXPECT_EQ(filterWithTheLegBeam(p, 1.0, 4).fast, kJump) << "four are too few for the rescue, and for this";
 }
 
 }  // namespace

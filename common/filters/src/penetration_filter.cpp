@@ -336,6 +336,9 @@ void PenetrationFilter::markMixedReturnsOfThinObjects(const Scan& scan, const Ei
   const double angle_step = std::abs(scan.angle_increment);
   for (std::size_t i = 0; i < labels.size(); ++i) {
     if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid) || !lone[i]) continue;
+    // A return the rescue would restore (returns seen from elsewhere around
+    // it) is an object there: the rear leg of a chair, partly behind a front one.
+    if (params_.rescue_persistent_points && evidenceAround(points_[i]) >= params_.rescue_min_count) continue;
     if (objectInFootprint(origin, points_[i], angle_step)) labels[i] = static_cast<std::uint8_t>(PointCode::kJump);
   }
 }

@@ -1,5 +1,6 @@
 #include "scanfilter/thin_object_check.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace scanfilter {
@@ -20,22 +21,19 @@ bool ThinObjectCheck::inFootprintInFront(const Eigen::Vector2d& origin, const Ei
 BeamMask inFrontOfBothSides(const Scan& scan, std::size_t max_beams, double depth_step) {
   const std::size_t n = scan.size();
   BeamMask out(n);
-  // Whether beam j returns farther than beam k by more than the step.
-  const auto farther = [&](std::size_t j, std::size_t k) {
-    return scan.hasReturn(j) && scan.ranges[j] > scan.ranges[k] + depth_step;
-  };
-  std::size_t start = 0;
-  while (start < n) {
-    if (!scan.hasReturn(start)) {
-      ++start;
-      continue;
+  // Every stretch [a, b] of returns, at most max_beams long, not at the
+  // scan's ends: flagged when both beams beside it return farther than its
+  // farthest return by more than the step.
+  for (std::size_t a = 1; a + 1 < n; ++a) {
+    if (!scan.hasReturn(a - 1)) continue;
+    double farthest = 0.0;
+    for (std::size_t b = a; b + 1 < n && b - a < max_beams && scan.hasReturn(b); ++b) {
+      farthest = std::max(farthest, scan.ranges[b]);
+      const double beyond = farthest + depth_step;
+      if (scan.ranges[a - 1] <= beyond) break;  // `beyond` only grows: no longer stretch passes either
+      if (!scan.hasReturn(b + 1) || scan.ranges[b + 1] <= beyond) continue;
+      for (std::size_t k = a; k <= b; ++k) out.set(k, true);
     }
-    std::size_t end = start + 1;  // one past the run's last return
-    while (end < n && scan.hasReturn(end) && std::abs(scan.ranges[end] - scan.ranges[end - 1]) <= depth_step) ++end;
-    const bool in_front =
-        end - start <= max_beams && start > 0 && end < n && farther(start - 1, start) && farther(end, end - 1);
-    for (std::size_t k = start; in_front && k < end; ++k) out.set(k, true);
-    start = end;
   }
   return out;
 }

@@ -120,14 +120,16 @@ struct PenetrationFilterParams {
   // (docs/accuracy.md, Beyond the paper 19).
   int free_space_veto_count = 2;
   // Beyond the paper (thin_object_check.hpp; docs/accuracy.md, Beyond the
-  // paper 25): a kept run of at most thin_object_max_beams returns standing
-  // in front of both sides (by edge_depth_step) becomes a jump point when an
+  // paper 25): a kept return in a stretch of at most thin_object_max_beams
+  // returns standing in front of both sides (by edge_depth_step; the object's
+  // own returns and its mixed ones beside them) becomes a jump point when an
   // obstacle cell lies on its beam more than edge_depth_step in front of it,
   // within thin_object_radius of the beam's footprint (one angular step
-  // wide): the mixed return of an object thinner than the footprint.
-  // false = the paper.
+  // wide): the mixed return of an object thinner than the footprint. Not
+  // when the rescue would restore it (rescue_min_count returns from
+  // elsewhere within rescue_radius: an object there). false = the paper.
   bool thin_object_check = true;
-  int thin_object_max_beams = 2;
+  int thin_object_max_beams = 3;
   double thin_object_radius = 0.02;  // m
   // Beyond the paper: each frame is fitted to the cache before it is judged
   // (frame_alignment.hpp); a frame that does not fit is not judged.

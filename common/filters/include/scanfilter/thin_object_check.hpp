@@ -15,7 +15,10 @@ namespace scanfilter {
 // The cache tells them apart: when its obstacle cells put an object on the
 // beam, more than a depth step in front of the return and close enough to
 // the beam's axis to lie in its footprint, the beam's light came partly from
-// that object, and the return lies where nothing is.
+// that object, and the return lies where nothing is. Unless the rescue's
+// evidence vouches for an object where the return lies (step 2 applies
+// that): a chair's rear leg partly behind its front one is seen there from
+// elsewhere too.
 class ThinObjectCheck {
  public:
   // depth_step: how much nearer than the return the object must be (and how
@@ -46,12 +49,16 @@ class ThinObjectCheck {
   double object_radius_;  // m
 };
 
-// Returns standing in front of both sides: maximal runs of at most
-// `max_beams` returns, each within `depth_step` of the next, whose
-// neighbouring beams on both sides return farther by more than `depth_step`.
-// A neighbour without a return does not count as farther: with nothing
-// within range behind the object, no background light pulls the range back,
-// so the return is the object's own. Runs at either end of the scan are not
+// Returns standing in front of both sides: every stretch of at most
+// `max_beams` returns whose neighbouring beams on both sides return farther
+// than the stretch's farthest return by more than `depth_step`. The
+// stretch holds a thin object's own returns and its mixed ones beside them
+// (the leg at 1 m and, next to it, a mix of the leg and the wall behind at
+// 2 m: both stand in front of the wall on either side). A wall's end is no
+// such stretch: the wall goes on for more than a few beams. A neighbour
+// without a return does not count as farther: with nothing within range
+// behind the object, no background light pulls the range back, so the return
+// is the object's own. Stretches touching either end of the scan are not
 // flagged (one side is unknown).
 BeamMask inFrontOfBothSides(const Scan& scan, std::size_t max_beams, double depth_step);
 
