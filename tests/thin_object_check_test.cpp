@@ -52,8 +52,10 @@ TEST(InFrontOfBothSides, ShortStretchesWithFartherReturnsOnBothSides) {
 // together with the leg.
 TEST(InFrontOfBothSides, AThinObjectWithItsMixedReturnBeside) {
   EXPECT_EQ(flagged(scanOf({3, 3, 1, 2, 3, 3}), 2), (std::vector<int>{2, 3}));
-  EXPECT_EQ(flagged(scanOf({3, 3, 1, 2, 3, 3}), 1), (std::vector<int>{2})) << "the mixed return alone is beside the leg";
-  EXPECT_EQ(flagged(scanOf({3, 3, 1, 2.9, 3, 3}), 2), (std::vector<int>{2})) << "the stretch must stand in front as a whole";
+  EXPECT_EQ(flagged(scanOf({3, 3, 1, 2, 3, 3}), 1), (std::vector<int>{2}))
+      << "the mixed return alone is beside the leg";
+  EXPECT_EQ(flagged(scanOf({3, 3, 1, 2.9, 3, 3}), 2), (std::vector<int>{2}))
+      << "the stretch must stand in front as a whole";
 }
 
 TEST(InFrontOfBothSides, NotBetweenNotNearNotBesideNothing) {

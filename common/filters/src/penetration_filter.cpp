@@ -331,11 +331,11 @@ void PenetrationFilter::markSeenThrough(const Scan& scan, const Eigen::Vector2d&
 
 void PenetrationFilter::markMixedReturnsOfThinObjects(const Scan& scan, const Eigen::Vector2d& origin,
                                                       std::span<std::uint8_t> labels) const {
-  const BeamMask lone = inFrontOfBothSides(scan, static_cast<std::size_t>(params_.thin_object_max_beams),
-                                           params_.edge_depth_step);
+  const BeamMask in_front = inFrontOfBothSides(scan, static_cast<std::size_t>(params_.thin_object_max_beams),
+                                               params_.edge_depth_step);
   const double angle_step = std::abs(scan.angle_increment);
   for (std::size_t i = 0; i < labels.size(); ++i) {
-    if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid) || !lone[i]) continue;
+    if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid) || !in_front[i]) continue;
     // A return the rescue would restore (returns seen from elsewhere around
     // it) is an object there: the rear leg of a chair, partly behind a front one.
     if (params_.rescue_persistent_points && evidenceAround(points_[i]) >= params_.rescue_min_count) continue;

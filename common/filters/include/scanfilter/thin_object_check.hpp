@@ -15,10 +15,9 @@ namespace scanfilter {
 // The cache tells them apart: when its obstacle cells put an object on the
 // beam, more than a depth step in front of the return and close enough to
 // the beam's axis to lie in its footprint, the beam's light came partly from
-// that object, and the return lies where nothing is. Unless the rescue's
-// evidence vouches for an object where the return lies (step 2 applies
-// that): a chair's rear leg partly behind its front one is seen there from
-// elsewhere too.
+// that object, and the return lies where nothing is. Step 2 spares a return
+// the rescue's evidence vouches for (returns seen from elsewhere where it
+// lies): a chair's rear leg, partly behind its front one.
 class ThinObjectCheck {
  public:
   // depth_step: how much nearer than the return the object must be (and how
@@ -30,8 +29,8 @@ class ThinObjectCheck {
 
   // The footprint is taken as one angular step wide: a triangulation
   // scanner sweeps its spot over the step while it measures, and beams
-  // placed a step apart leave no gaps. (A time-of-flight spot is wider, so
-  // some of its mixed returns are missed; none is marked wrongly for it.)
+  // placed a step apart leave no gaps. (A time-of-flight spot is wider than
+  // its step, so some of its mixed returns are missed.)
   double halfWidthAt(double distance, double angle_step) const {
     return object_radius_ + 0.5 * distance * angle_step;
   }
