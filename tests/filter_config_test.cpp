@@ -130,6 +130,12 @@ TEST(FilterConfigErrors, NameFileLineAndKey) {
             "f.yaml:2: penetration_filter.free_space_veto_count: expected an integer >= 1");
   EXPECT_EQ(errorOf("penetration_filter:\n  thin_object_max_beams: 0\n"),
             "f.yaml:2: penetration_filter.thin_object_max_beams: expected an integer >= 1");
+  EXPECT_EQ(errorOf("penetration_filter:\n  thin_object_radius: 2\n"),
+            "f.yaml:2: penetration_filter.thin_object_radius: expected 0 <= value <= 1 (m)");
+  EXPECT_EQ(errorOf("penetration_filter:\n  edge_depth_step: 0\n"),
+            "f.yaml:2: penetration_filter.edge_depth_step: must be > 0 with thin_object_check (or set "
+            "thin_object_check: false)");
+  EXPECT_EQ(errorOf("penetration_filter:\n  edge_depth_step: 0\n  thin_object_check: false\n"), "no error");
   EXPECT_EQ(errorOf("penetration_filter:\n  cache_min_interval: -0.1\n"),
             "f.yaml:2: penetration_filter.cache_min_interval: expected 0 <= value <= 10 (s; 0: every frame)");
   EXPECT_EQ(errorOf("penetration_filter:\n  free_space_margin_per_m: -0.01\n"),

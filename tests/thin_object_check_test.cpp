@@ -47,6 +47,20 @@ TEST(InFrontOfBothSides, ShortStretchesWithFartherReturnsOnBothSides) {
   EXPECT_EQ(flagged(scanOf({3, 1.0, 1.1, 1.0, 3}), 3), (std::vector<int>{1, 2, 3}));
 }
 
+// A full turn of 360 beams at 3 m: a stretch at the seam has both sides.
+TEST(InFrontOfBothSides, AcrossAFullTurnsSeam) {
+  std::vector<double> ranges(360, 3.0);
+  ranges[359] = 1.0;
+  ranges[0] = 1.1;
+  EXPECT_EQ(flagged(scanOf(ranges), 2), (std::vector<int>{0, 359}));
+  ranges[1] = 1.0;
+  EXPECT_EQ(flagged(scanOf(ranges), 2), (std::vector<int>{})) << "three across the seam: longer than max_beams";
+  ranges.resize(180);  // half a turn: beams 0 and 179 have one side only
+  ranges[1] = 3.0;
+  ranges[179] = 1.0;
+  EXPECT_EQ(flagged(scanOf(ranges), 2), (std::vector<int>{}));
+}
+
 // A leg at 1 m and beside it the mix of the leg and the wall behind at 2 m:
 // both stand in front of the wall on either side, the mixed return only
 // together with the leg.
@@ -63,6 +77,7 @@ TEST(InFrontOfBothSides, NotBetweenNotNearNotBesideNothing) {
   EXPECT_EQ(flagged(scanOf({3, 3, 2.9, 3, 3}), 2), (std::vector<int>{})) << "within the depth step: noise";
   EXPECT_EQ(flagged(scanOf({3, 3, 1, kNaN, 3}), 2), (std::vector<int>{}))
       << "nothing within range on one side: no background light to mix";
+  EXPECT_EQ(flagged(scanOf({3, kNaN, 1, 3, 3}), 2), (std::vector<int>{})) << "nor on the other";
   EXPECT_EQ(flagged(scanOf({1, 3, 3, 3, 1}), 2), (std::vector<int>{})) << "at the scan's ends one side is unknown";
   EXPECT_EQ(flagged(scanOf({3, 3, 4, 3, 3}), 2), (std::vector<int>{})) << "behind both sides is no thin object";
 }
@@ -92,13 +107,15 @@ TEST(ThinObjectCheck, AnObjectInTheFootprintInFrontOfTheReturn) {
 // the leg's distance plus `beyond_leg` instead, its neighbours the wall
 // behind. In the first `earlier_there` frames (all 0.25 m+ from the last)
 // one beam ends where that return will lie, as a rear leg seen from
-// elsewhere would. Returns the last frame's label of that beam from both
-// implementations.
+// elsewhere would. The `beside` beams after it report the same range (an
+// object that wide). Returns the last frame's label of the beam towards the
+// leg from both implementations.
 struct LegBeam {
   std::uint8_t reference = 0, fast = 0;
 };
 
-LegBeam filterWithTheLegBeam(const PenetrationFilterParams& p, double beyond_leg, int earlier_there = 0) {
+LegBeam filterWithTheLegBeam(const PenetrationFilterParams& p, double beyond_leg, int earlier_there = 0,
+                             int beside = 0) {
   const SensorInfo sensor = test::simpleSensor();
   const World room = World{}
                          .wall({3, -3}, {3, 3})
@@ -131,7 +148,10 @@ LegBeam filterWithTheLegBeam(const PenetrationFilterParams& p, double beyond_leg
       const Eigen::Vector2d to = return_at - Eigen::Vector2d(pose.x, pose.y);
       scan.ranges[test::beamTowards(scan, sensor, std::atan2(to.y(), to.x()))] = to.norm();
     }
-    if (last) scan.ranges[leg_beam] = (leg - Eigen::Vector2d(pose.x, pose.y)).norm() - kLegRadius + beyond_leg;
+    if (last) {
+      const double range = (leg - Eigen::Vector2d(pose.x, pose.y)).norm() - kLegRadius + beyond_leg;
+      for (int k = 0; k <= beside; ++k) scan.ranges[leg_beam + static_cast<std::size_t>(k)] = range;
+    }
     std::vector<std::uint8_t> labels(scan.size());
     for (std::size_t i = 0; i < scan.size(); ++i)
       labels[i] = scan.hasReturn(i) ? kValid : static_cast<std::uint8_t>(PointCode::kNoReturn);
@@ -180,6 +200,23 @@ TEST(ThinObjectCheck, ReturnsFromElsewhereWhereItLiesKeepIt) {
   EXPECT_EQ(kept.reference, kept.fast);
   EXPECT_EQ(kept.fast, kValid) << "five returns from elsewhere vouch for an object there";
   EXPECT_EQ(filterWithTheLegBeam(p, 1.0, 4).fast, kJump) << "four are too few for the rescue, and for this";
+
+  PenetrationFilterParams no_rescue = p;
+  no_rescue.rescue_persistent_points = false;
+  EXPECT_EQ(filterWithTheLegBeam(no_rescue, 1.0, 5).fast, kJump) << "without the rescue there is no evidence";
+}
+
+// Something as wide as thin_object_max_beams beams is checked; wider, it is
+// no thin object, whatever lies in the footprint of its beams.
+TEST(ThinObjectCheck, OnlyStretchesUpToMaxBeams) {
+  const PenetrationFilterParams p = thinObjectsOnly();
+  ASSERT_EQ(p.thin_object_max_beams, 3);
+  const LegBeam three = filterWithTheLegBeam(p, 1.0, 0, 2);
+  EXPECT_EQ(three.reference, three.fast);
+  EXPECT_EQ(three.fast, kJump);
+  const LegBeam four = filterWithTheLegBeam(p, 1.0, 0, 3);
+  EXPECT_EQ(four.reference, four.fast);
+  EXPECT_EQ(four.fast, kValid);
 }
 
 }  // namespace

@@ -331,13 +331,14 @@ void PenetrationFilter::markSeenThrough(const Scan& scan, const Eigen::Vector2d&
 
 void PenetrationFilter::markMixedReturnsOfThinObjects(const Scan& scan, const Eigen::Vector2d& origin,
                                                       std::span<std::uint8_t> labels) const {
-  const BeamMask in_front = inFrontOfBothSides(scan, static_cast<std::size_t>(params_.thin_object_max_beams),
-                                               params_.edge_depth_step);
-  const double angle_step = std::abs(scan.angle_increment);
+  const BeamMask in_front = inFrontOfBothSides(
+      scan, static_cast<std::size_t>(std::max(0, params_.thin_object_max_beams)), params_.edge_depth_step);
+  const double angle_step = scan.angle_increment;
   for (std::size_t i = 0; i < labels.size(); ++i) {
     if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid) || !in_front[i]) continue;
-    // A return the rescue would restore (returns seen from elsewhere around
-    // it) is an object there: the rear leg of a chair, partly behind a front one.
+    // A return the rescue would restore (its evidence: returns of frames
+    // taken rescue_min_baseline away, or of all while none is) is an object
+    // there: the rear leg of a chair, partly behind a front one.
     if (params_.rescue_persistent_points && evidenceAround(points_[i]) >= params_.rescue_min_count) continue;
     if (objectInFootprint(origin, points_[i], angle_step)) labels[i] = static_cast<std::uint8_t>(PointCode::kJump);
   }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scanfilter/scan_geometry.hpp"
+
 namespace scanfilter {
 
 bool ThinObjectCheck::inFootprintInFront(const Eigen::Vector2d& origin, const Eigen::Vector2d& p,
@@ -21,18 +23,26 @@ bool ThinObjectCheck::inFootprintInFront(const Eigen::Vector2d& origin, const Ei
 BeamMask inFrontOfBothSides(const Scan& scan, std::size_t max_beams, double depth_step) {
   const std::size_t n = scan.size();
   BeamMask out(n);
-  // Every stretch [a, b] of returns, at most max_beams long, not at the
-  // scan's ends: flagged when both beams beside it return farther than its
-  // farthest return by more than the step.
-  for (std::size_t a = 1; a + 1 < n; ++a) {
-    if (!scan.hasReturn(a - 1)) continue;
+  if (n < 3) return out;  // no stretch has two sides
+  // A full turn goes on across its seam, as step 1's clusters do; a partial
+  // one has no beam beyond its ends.
+  const bool wraps = isFullTurn(scan);
+  const std::size_t longest = std::min(max_beams, n - 2);
+  // Every stretch [a, a + length) of returns: flagged when both beams beside
+  // it return farther than its farthest return by more than the step.
+  for (std::size_t a = wraps ? 0 : 1; a < n; ++a) {
+    const std::size_t before = (a + n - 1) % n;
+    if (!scan.hasReturn(before)) continue;
     double farthest = 0.0;
-    for (std::size_t b = a; b + 1 < n && b - a < max_beams && scan.hasReturn(b); ++b) {
-      farthest = std::max(farthest, scan.ranges[b]);
+    for (std::size_t length = 1; length <= longest && (wraps || a + length < n); ++length) {
+      const std::size_t last = (a + length - 1) % n;
+      if (!scan.hasReturn(last)) break;
+      farthest = std::max(farthest, scan.ranges[last]);
       const double beyond = farthest + depth_step;
-      if (scan.ranges[a - 1] <= beyond) break;  // `beyond` only grows: no longer stretch passes either
-      if (!scan.hasReturn(b + 1) || scan.ranges[b + 1] <= beyond) continue;
-      for (std::size_t k = a; k <= b; ++k) out.set(k, true);
+      if (scan.ranges[before] <= beyond) break;  // `beyond` only grows: no longer stretch passes either
+      const std::size_t after = (a + length) % n;
+      if (!scan.hasReturn(after) || scan.ranges[after] <= beyond) continue;
+      for (std::size_t k = 0; k < length; ++k) out.set((a + k) % n, true);
     }
   }
   return out;

@@ -1,4 +1,6 @@
 #pragma once
+#include <cmath>
+
 #include <Eigen/Core>
 
 #include "scanfilter/beam_mask.hpp"
@@ -9,8 +11,9 @@ namespace scanfilter {
 // Beyond the paper (docs/accuracy.md, Beyond the paper 25): the mixed return
 // of an object thinner than the beam's footprint, a chair or table leg. The
 // footprint falls partly on the object and partly on the background behind
-// it, and the sensor reports a range between the two: a lone return in
-// front of both neighbouring beams, far from any surface. A real thin leg
+// it, and the sensor reports a range between the two: beside the object's
+// own returns, in front of the background on both sides, far from any
+// surface. A real thin leg
 // looks the same in one scan, so step 1 keeps it (keep_foreground_clusters).
 // The cache tells them apart: when its obstacle cells put an object on the
 // beam, more than a depth step in front of the return and close enough to
@@ -23,7 +26,8 @@ class ThinObjectCheck {
   // depth_step: how much nearer than the return the object must be (and how
   // much farther both neighbours are: a depth edge, not a surface's noise);
   // object_radius: how far an object's position (the mean of its cached
-  // returns) may lie from the edge of the footprint it reaches into.
+  // returns, or its cell's centre without obstacle_at_centroid) may lie from
+  // the edge of the footprint it reaches into.
   ThinObjectCheck(double depth_step, double object_radius)
       : depth_step_(depth_step), object_radius_(object_radius) {}
 
@@ -31,8 +35,9 @@ class ThinObjectCheck {
   // scanner sweeps its spot over the step while it measures, and beams
   // placed a step apart leave no gaps. (A time-of-flight spot is wider than
   // its step, so some of its mixed returns are missed.)
+  // (The step's sign, the beams' direction, does not matter.)
   double halfWidthAt(double distance, double angle_step) const {
-    return object_radius_ + 0.5 * distance * angle_step;
+    return object_radius_ + 0.5 * distance * std::abs(angle_step);
   }
 
   // Whether obstacle position q, seen from `origin`, is an object in the
@@ -57,8 +62,8 @@ class ThinObjectCheck {
 // such stretch: the wall goes on for more than a few beams. A neighbour
 // without a return does not count as farther: with nothing within range
 // behind the object, no background light pulls the range back, so the return
-// is the object's own. Stretches touching either end of the scan are not
-// flagged (one side is unknown).
+// is the object's own. On a full turn stretches run across the seam; on a
+// partial one a stretch at either end is not flagged (one side is unknown).
 BeamMask inFrontOfBothSides(const Scan& scan, std::size_t max_beams, double depth_step);
 
 }  // namespace scanfilter
