@@ -567,6 +567,32 @@ TEST(PenetrationGrid, AnyObstacleInARectangleAgreesWithItsCells) {
   }
 }
 
+// The thin-object check's cells: those holding at least a count, obstacle
+// or not, in a rectangle across tile edges, against count() cell by cell.
+TEST(PenetrationGrid, CellsHoldingAtLeastACountAgreeWithTheirCounts) {
+  PenetrationGrid grid(0.05, 2);
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> coordinate(-2.0, 2.0);
+  for (int k = 0; k < 1500; ++k) {
+    const Eigen::Vector2d p(coordinate(rng), coordinate(rng));
+    for (int copies = 0; copies < 1 + k % 4; ++copies) grid.add(p);
+  }
+  std::uniform_int_distribution<int> corner(-45, 40), side(0, 40), least(0, 4);
+  for (int trial = 0; trial < 200; ++trial) {
+    const CellIndex lo{corner(rng), corner(rng)};
+    const CellIndex hi{lo.x + side(rng), lo.y + side(rng)};
+    const int min_count = least(rng);
+    std::vector<std::pair<int, int>> expected, got;
+    for (std::int32_t y = lo.y; y <= hi.y; ++y)
+      for (std::int32_t x = lo.x; x <= hi.x; ++x)
+        if (grid.count({x, y}) >= std::max(1, min_count)) expected.emplace_back(x, y);
+    grid.forEachCellHoldingIn(lo, hi, min_count, [&](CellIndex c) { got.emplace_back(c.x, c.y); });
+    std::sort(expected.begin(), expected.end());
+    std::sort(got.begin(), got.end());
+    ASSERT_EQ(got, expected) << "trial " << trial << ", at least " << min_count << " (0: only cells with points)";
+  }
+}
+
 TEST(PenetrationGrid, TheTileJustBelowBothAxesIsFoundAfterAnotherWasCreated) {
   // Cells -32..-1 in x and y form the tile whose key is all ones; a lookup
   // cache that used that key to mean "nothing cached" answered for it with

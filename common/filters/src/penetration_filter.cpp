@@ -358,16 +358,19 @@ bool PenetrationFilter::objectInFootprint(const Eigen::Vector2d& origin, const E
     const double to = std::min(reach, from + kStretch);
     const Eigen::Vector2d a = origin + unit * from;
     const Eigen::Vector2d b = origin + unit * to;
-    // An obstacle's position lies in its cell, so the cells of the box hold
-    // every position within it.
+    // A cell's position lies in the cell, so the cells of the box hold every
+    // position within it.
     const double pad = thin_objects_.halfWidthAt(to, angle_step);
     bool found = false;
-    grid_.forEachObstacleIn(grid_.cellOf(a.cwiseMin(b).array() - pad), grid_.cellOf(a.cwiseMax(b).array() + pad),
-                            [&](CellIndex c) {
-                              if (found) return;
-                              const Eigen::Vector2d q = obstaclePosition(c);
-                              found = countsAsObstacle(q) && thin_objects_.inFootprintInFront(origin, p, q, angle_step);
-                            });
+    // Cells holding obs_th returns count, one fewer than an obstacle needs:
+    // most of a thin leg's returns are mixed and land elsewhere.
+    grid_.forEachCellHoldingIn(grid_.cellOf(a.cwiseMin(b).array() - pad), grid_.cellOf(a.cwiseMax(b).array() + pad),
+                               params_.obstacle_threshold, [&](CellIndex c) {
+                                 if (found) return;
+                                 const Eigen::Vector2d q = obstaclePosition(c);
+                                 found = countsAsObstacle(q) &&
+                                         thin_objects_.inFootprintInFront(origin, p, q, angle_step);
+                               });
     if (found) return true;
   }
   return false;

@@ -122,8 +122,9 @@ struct PenetrationFilterParams {
   // Beyond the paper (thin_object_check.hpp; docs/accuracy.md, Beyond the
   // paper 25): a kept return in a stretch of at most thin_object_max_beams
   // returns standing in front of both sides (by edge_depth_step; the object's
-  // own returns and its mixed ones beside them) becomes a jump point when an
-  // obstacle cell lies on its beam more than edge_depth_step in front of it,
+  // own returns and its mixed ones beside them) becomes a jump point when a
+  // cell holding obs_th cached returns (an obstacle needs more) lies on its
+  // beam more than edge_depth_step in front of it,
   // within thin_object_radius of the beam's footprint (one angular step
   // wide): the mixed return of an object thinner than the footprint. Not
   // when the rescue would restore it (rescue_min_count returns from

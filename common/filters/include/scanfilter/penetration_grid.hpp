@@ -100,6 +100,22 @@ class PenetrationGrid {
     });
   }
 
+  // Calls fn(cell) for every cell in lo..hi (inclusive) holding at least
+  // `min_count` points (at least one), obstacle or not: a leg thinner than
+  // the footprint leaves fewer returns on itself than an obstacle needs.
+  template <typename Fn>
+  void forEachCellHoldingIn(CellIndex lo, CellIndex hi, int min_count, Fn&& fn) const {
+    const auto least = static_cast<std::uint32_t>(std::max(1, min_count));
+    forEachTileIn(lo, hi, [&](const Tile& tile, CellIndex origin) {
+      const std::int32_t y1 = std::min(hi.y, origin.y + kTileSide - 1);
+      const std::int32_t x1 = std::min(hi.x, origin.x + kTileSide - 1);
+      for (std::int32_t y = std::max(lo.y, origin.y); y <= y1; ++y)
+        for (std::int32_t x = std::max(lo.x, origin.x); x <= x1; ++x)
+          if (tile.counts[slot({x, y})] >= least) fn(CellIndex{x, y});
+      return false;
+    });
+  }
+
   // Whether any cell in lo..hi (inclusive) is an obstacle.
   bool anyObstacleIn(CellIndex lo, CellIndex hi) const {
     return anySlotIn(lo, hi, [](const Tile& tile, std::size_t slot) {
