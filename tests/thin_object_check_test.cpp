@@ -105,17 +105,27 @@ TEST(ThinObjectCheck, AnObjectInTheFootprintInFrontOfTheReturn) {
 // valid (step 1 found nothing), so the cache holds the leg as an obstacle
 // cell. In the last frame the leg is not seen: the beam towards it reports
 // the leg's distance plus `beyond_leg` instead, its neighbours the wall
-// behind. In the first `earlier_there` frames (all 0.25 m+ from the last)
-// one beam ends where that return will lie, as a rear leg seen from
-// elsewhere would. The `beside` beams after it report the same range (an
-// object that wide). Returns the last frame's label of the beam towards the
-// leg from both implementations.
+// behind. Returns that beam's label from both implementations.
+struct LegScene {
+  double beyond_leg = 1.0;  // m
+  // In the first this many frames (all 0.25 m+ from the last) one beam ends
+  // where the last frame's return will lie, as a rear leg seen from
+  // elsewhere would.
+  int earlier_there = 0;
+  // This many beams after the one towards the leg report its range too (an
+  // object that wide).
+  int beside = 0;
+  // Not 0: the leg is no solid; the first this many frames each have one
+  // return at its centre (before the warm-up, so they all stay valid), the
+  // cell's whole count.
+  int leg_returns = 0;
+};
+
 struct LegBeam {
   std::uint8_t reference = 0, fast = 0;
 };
 
-LegBeam filterWithTheLegBeam(const PenetrationFilterParams& p, double beyond_leg, int earlier_there = 0,
-                             int beside = 0) {
+LegBeam filterWithTheLegBeam(const PenetrationFilterParams& p, const LegScene& scene) {
   const SensorInfo sensor = test::simpleSensor();
   const World room = World{}
                          .wall({3, -3}, {3, 3})
@@ -134,23 +144,26 @@ LegBeam filterWithTheLegBeam(const PenetrationFilterParams& p, double beyond_leg
   const auto poseOf = [](int k) { return Pose2{0.0, 0.05 * k, 0.0}; };
   const Eigen::Vector2d last_at(0.0, poseOf(kFrames - 1).y);
   const Eigen::Vector2d return_at =
-      last_at + (leg - last_at).normalized() * ((leg - last_at).norm() - kLegRadius + beyond_leg);
-  if (earlier_there > 0) {
-    EXPECT_GE(poseOf(kFrames - 1).y - poseOf(earlier_there - 1).y, p.rescue_min_baseline);
+      last_at + (leg - last_at).normalized() * ((leg - last_at).norm() - kLegRadius + scene.beyond_leg);
+  if (scene.earlier_there > 0) {
+    EXPECT_GE(poseOf(kFrames - 1).y - poseOf(scene.earlier_there - 1).y, p.rescue_min_baseline);
   }
+  EXPECT_LT(scene.leg_returns, p.min_frames) << "the leg's returns must come before the warm-up ends";
   LegBeam out;
   for (int k = 0; k < kFrames; ++k) {
     const Pose2 pose = poseOf(k);
+    const Eigen::Vector2d sensor_at(pose.x, pose.y);
     const bool last = k == kFrames - 1;
-    Scan scan = castScan(last ? room : with_leg, pose, sensor, 360, 0.1 * k);
+    Scan scan = castScan(last || scene.leg_returns > 0 ? room : with_leg, pose, sensor, 360, 0.1 * k);
     const std::size_t leg_beam = test::beamTowards(scan, sensor, std::atan2(leg.y() - pose.y, leg.x()));
-    if (k < earlier_there) {
-      const Eigen::Vector2d to = return_at - Eigen::Vector2d(pose.x, pose.y);
+    if (k < scene.leg_returns) scan.ranges[leg_beam] = (leg - sensor_at).norm();
+    if (k < scene.earlier_there) {
+      const Eigen::Vector2d to = return_at - sensor_at;
       scan.ranges[test::beamTowards(scan, sensor, std::atan2(to.y(), to.x()))] = to.norm();
     }
     if (last) {
-      const double range = (leg - Eigen::Vector2d(pose.x, pose.y)).norm() - kLegRadius + beyond_leg;
-      for (int k = 0; k <= beside; ++k) scan.ranges[leg_beam + static_cast<std::size_t>(k)] = range;
+      const double range = (leg - sensor_at).norm() - kLegRadius + scene.beyond_leg;
+      for (int b = 0; b <= scene.beside; ++b) scan.ranges[leg_beam + static_cast<std::size_t>(b)] = range;
     }
     std::vector<std::uint8_t> labels(scan.size());
     for (std::size_t i = 0; i < scan.size(); ++i)
@@ -175,19 +188,19 @@ TEST(ThinObjectCheck, StepTwoRemovesTheMixedReturnBehindALeg) {
   const PenetrationFilterParams p = thinObjectsOnly();
   ASSERT_TRUE(p.thin_object_check);
   // The last frame sees the leg 1.25 m away and the wall behind it 3.4 m away.
-  const LegBeam mixed = filterWithTheLegBeam(p, 1.0);
+  const LegBeam mixed = filterWithTheLegBeam(p, {.beyond_leg = 1.0});
   EXPECT_EQ(mixed.reference, mixed.fast) << "both implementations run the same check";
   EXPECT_EQ(mixed.fast, kJump) << "the cached leg lies in its footprint, 1 m in front of it";
-  EXPECT_EQ(filterWithTheLegBeam(p, 0.2).fast, kJump) << "20 cm: beyond the depth step";
+  EXPECT_EQ(filterWithTheLegBeam(p, {.beyond_leg = 0.2}).fast, kJump) << "20 cm: beyond the depth step";
 
-  const LegBeam own = filterWithTheLegBeam(p, 0.0);
+  const LegBeam own = filterWithTheLegBeam(p, {.beyond_leg = 0.0});
   EXPECT_EQ(own.reference, own.fast);
   EXPECT_EQ(own.fast, kValid) << "the leg's own return: its cached cell is no object in front of it";
-  EXPECT_EQ(filterWithTheLegBeam(p, 0.1).fast, kValid) << "10 cm: within the depth step";
+  EXPECT_EQ(filterWithTheLegBeam(p, {.beyond_leg = 0.1}).fast, kValid) << "10 cm: within the depth step";
 
   PenetrationFilterParams off = p;
   off.thin_object_check = false;
-  EXPECT_EQ(filterWithTheLegBeam(off, 1.0).fast, kValid) << "the paper's step 2 keeps it";
+  EXPECT_EQ(filterWithTheLegBeam(off, {}).fast, kValid) << "the paper's step 2 keeps it";
 }
 
 // Returns from elsewhere where the return lies (as many as the rescue needs
@@ -196,14 +209,14 @@ TEST(ThinObjectCheck, StepTwoRemovesTheMixedReturnBehindALeg) {
 TEST(ThinObjectCheck, ReturnsFromElsewhereWhereItLiesKeepIt) {
   const PenetrationFilterParams p = thinObjectsOnly();
   ASSERT_EQ(p.rescue_min_count, 5);
-  const LegBeam kept = filterWithTheLegBeam(p, 1.0, 5);
+  const LegBeam kept = filterWithTheLegBeam(p, {.earlier_there = 5});
   EXPECT_EQ(kept.reference, kept.fast);
   EXPECT_EQ(kept.fast, kValid) << "five returns from elsewhere vouch for an object there";
-  EXPECT_EQ(filterWithTheLegBeam(p, 1.0, 4).fast, kJump) << "four are too few for the rescue, and for this";
+  EXPECT_EQ(filterWithTheLegBeam(p, {.earlier_there = 4}).fast, kJump) << "four are too few for the rescue, and for this";
 
   PenetrationFilterParams no_rescue = p;
   no_rescue.rescue_persistent_points = false;
-  EXPECT_EQ(filterWithTheLegBeam(no_rescue, 1.0, 5).fast, kJump) << "without the rescue there is no evidence";
+  EXPECT_EQ(filterWithTheLegBeam(no_rescue, {.earlier_there = 5}).fast, kJump) << "without the rescue there is no evidence";
 }
 
 // Something as wide as thin_object_max_beams beams is checked; wider, it is
@@ -211,12 +224,24 @@ TEST(ThinObjectCheck, ReturnsFromElsewhereWhereItLiesKeepIt) {
 TEST(ThinObjectCheck, OnlyStretchesUpToMaxBeams) {
   const PenetrationFilterParams p = thinObjectsOnly();
   ASSERT_EQ(p.thin_object_max_beams, 3);
-  const LegBeam three = filterWithTheLegBeam(p, 1.0, 0, 2);
+  const LegBeam three = filterWithTheLegBeam(p, {.beside = 2});
   EXPECT_EQ(three.reference, three.fast);
   EXPECT_EQ(three.fast, kJump);
-  const LegBeam four = filterWithTheLegBeam(p, 1.0, 0, 3);
+  const LegBeam four = filterWithTheLegBeam(p, {.beside = 3});
   EXPECT_EQ(four.reference, four.fast);
   EXPECT_EQ(four.fast, kValid);
+}
+
+// Most of a thin leg's returns are mixed and land elsewhere, so a cell
+// holding obs_th returns (2 at 1°) is an object here, though an obstacle
+// needs more.
+TEST(ThinObjectCheck, ACellHoldingObsThReturnsIsAnObject) {
+  const PenetrationFilterParams p = thinObjectsOnly();
+  ASSERT_EQ(p.obstacle_threshold, 2);
+  const LegBeam two = filterWithTheLegBeam(p, {.leg_returns = 2});
+  EXPECT_EQ(two.reference, two.fast);
+  EXPECT_EQ(two.fast, kJump) << "two cached returns at the leg: an object in the footprint";
+  EXPECT_EQ(filterWithTheLegBeam(p, {.leg_returns = 1}).fast, kValid) << "one is not";
 }
 
 }  // namespace

@@ -189,10 +189,10 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
                  "an integer from 1 to max_cache_frames");
   s.requireRange("free_space_veto_count", p.free_space_veto_count, 1, 1e9, "an integer >= 1");
   s.requireRange("thin_object_max_beams", p.thin_object_max_beams, 1, 1e9, "an integer >= 1");
+  s.requireRange("thin_object_radius", p.thin_object_radius, 0.0, 1.0, "0 <= value <= 1 (m)");
   // With no depth step every local minimum would stand in front, and a return's own cell in front of it.
   if (p.thin_object_check && !(p.edge_depth_step > 0.0))
     s.fail("edge_depth_step", "must be > 0 with thin_object_check (or set thin_object_check: false)");
-  s.requireRange("thin_object_radius", p.thin_object_radius, 0.0, 1.0, "0 <= value <= 1 (m)");
   s.rejectUnknownKeys();
 }
 

@@ -16,7 +16,7 @@ bool ThinObjectCheck::inFootprintInFront(const Eigen::Vector2d& origin, const Ei
   const Eigen::Vector2d w = q - origin;
   const double along = w.dot(unit);
   if (along <= 0.0 || along > length - depth_step_) return false;  // behind the sensor, or not in front of p
-  const double across = std::abs(w.x() * unit.y() - w.y() * unit.x());
+  const double across = std::abs(cross(unit, w));
   return across <= halfWidthAt(along, angle_step);
 }
 

@@ -157,8 +157,9 @@ class PenetrationFilter {
   // (points_ and `origin` placed as judged).
   void markMixedReturnsOfThinObjects(const Scan& scan, const Eigen::Vector2d& origin,
                                      std::span<std::uint8_t> labels) const;
-  // Whether an obstacle cell that counts as one puts an object in the
-  // footprint of the beam from `origin` to p, in front of p.
+  // Whether a cell holding obs_th returns (outside the frame's edge fringes)
+  // puts an object in the footprint of the beam from `origin` to p, in front
+  // of p.
   bool objectInFootprint(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, double angle_step) const;
   // surface_memory: kept returns beyond a remembered surface become
   // misdetected (points_ and `origin` placed as judged).

@@ -124,9 +124,9 @@ struct PenetrationFilterParams {
   // returns standing in front of both sides (by edge_depth_step; the object's
   // own returns and its mixed ones beside them) becomes a jump point when a
   // cell holding obs_th cached returns (an obstacle needs more) lies on its
-  // beam more than edge_depth_step in front of it,
-  // within thin_object_radius of the beam's footprint (one angular step
-  // wide): the mixed return of an object thinner than the footprint. Not
+  // beam more than edge_depth_step in front of it, within thin_object_radius
+  // of the beam's footprint (one angular step wide): the mixed return of an
+  // object thinner than the footprint. Not
   // when the rescue would restore it (rescue_min_count returns from
   // elsewhere within rescue_radius: an object there). false = the paper.
   bool thin_object_check = true;

@@ -106,12 +106,8 @@ class PenetrationGrid {
   template <typename Fn>
   void forEachCellHoldingIn(CellIndex lo, CellIndex hi, int min_count, Fn&& fn) const {
     const auto least = static_cast<std::uint32_t>(std::max(1, min_count));
-    forEachTileIn(lo, hi, [&](const Tile& tile, CellIndex origin) {
-      const std::int32_t y1 = std::min(hi.y, origin.y + kTileSide - 1);
-      const std::int32_t x1 = std::min(hi.x, origin.x + kTileSide - 1);
-      for (std::int32_t y = std::max(lo.y, origin.y); y <= y1; ++y)
-        for (std::int32_t x = std::max(lo.x, origin.x); x <= x1; ++x)
-          if (tile.counts[slot({x, y})] >= least) fn(CellIndex{x, y});
+    anyCellIn(lo, hi, [&](const Tile& tile, CellIndex c) {
+      if (tile.counts[slot(c)] >= least) fn(c);
       return false;
     });
   }
@@ -164,18 +160,23 @@ class PenetrationGrid {
     }
     return false;
   }
-  // stop(tile, slot) for every cell of lo..hi in a tile that exists, until
+  // stop(tile, cell) for every cell of lo..hi in a tile that exists, until
   // it returns true; whether it did.
   template <typename Stop>
-  bool anySlotIn(CellIndex lo, CellIndex hi, Stop&& stop) const {
+  bool anyCellIn(CellIndex lo, CellIndex hi, Stop&& stop) const {
     return forEachTileIn(lo, hi, [&](const Tile& tile, CellIndex origin) {
       const std::int32_t y1 = std::min(hi.y, origin.y + kTileSide - 1);
       const std::int32_t x1 = std::min(hi.x, origin.x + kTileSide - 1);
       for (std::int32_t y = std::max(lo.y, origin.y); y <= y1; ++y)
         for (std::int32_t x = std::max(lo.x, origin.x); x <= x1; ++x)
-          if (stop(tile, slot({x, y}))) return true;
+          if (stop(tile, CellIndex{x, y})) return true;
       return false;
     });
+  }
+  // The same with the cell's slot in its tile.
+  template <typename Stop>
+  bool anySlotIn(CellIndex lo, CellIndex hi, Stop&& stop) const {
+    return anyCellIn(lo, hi, [&](const Tile& tile, CellIndex c) { return stop(tile, slot(c)); });
   }
   // sign +1 adds the run, -1 removes it.
   void change(const CellRun& run, int sign);

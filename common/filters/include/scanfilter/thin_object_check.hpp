@@ -13,13 +13,12 @@ namespace scanfilter {
 // footprint falls partly on the object and partly on the background behind
 // it, and the sensor reports a range between the two: beside the object's
 // own returns, in front of the background on both sides, far from any
-// surface. A real thin leg
-// looks the same in one scan, so step 1 keeps it (keep_foreground_clusters).
-// The cache tells them apart: when a cell of it holding obs_th returns (one
-// fewer than an obstacle needs: most of a thin leg's returns are mixed and
-// land elsewhere) puts an object on the beam, more than a depth step in
-// front of the return and close enough to
-// the beam's axis to lie in its footprint, the beam's light came partly from
+// surface. A real thin leg looks the same in one scan, so step 1 keeps it
+// (keep_foreground_clusters). The cache tells them apart: when a cell of it
+// holding obs_th returns (one fewer than an obstacle needs: most of a thin
+// leg's returns are mixed and land elsewhere) puts an object on the beam,
+// more than a depth step in front of the return and close enough to the
+// beam's axis to lie in its footprint, the beam's light came partly from
 // that object, and the return lies where nothing is. Step 2 spares a return
 // the rescue's evidence vouches for (returns seen from elsewhere where it
 // lies): a chair's rear leg, partly behind its front one.
@@ -35,15 +34,15 @@ class ThinObjectCheck {
 
   // The footprint is taken as one angular step wide: a triangulation
   // scanner sweeps its spot over the step while it measures, and beams
-  // placed a step apart leave no gaps. (A time-of-flight spot is wider than
-  // its step, so some of its mixed returns are missed.)
-  // (The step's sign, the beams' direction, does not matter.)
+  // placed a step apart leave no gaps. A time-of-flight spot is wider than
+  // its step, so some of its mixed returns are missed. The step's sign (the
+  // beams' direction) does not matter.
   double halfWidthAt(double distance, double angle_step) const {
     return object_radius_ + 0.5 * distance * std::abs(angle_step);
   }
 
-  // Whether obstacle position q, seen from `origin`, is an object in the
-  // footprint of the beam to p, in front of p by more than the depth step.
+  // Whether a cached object at q, seen from `origin`, lies in the footprint
+  // of the beam to p, in front of p by more than the depth step.
   bool inFootprintInFront(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, const Eigen::Vector2d& q,
                           double angle_step) const;
 
