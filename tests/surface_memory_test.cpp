@@ -142,6 +142,64 @@ TEST(SurfaceMemory, ForgetsASurfaceTheSensorDroveThrough) {
   EXPECT_EQ(memory.size(), 0u);
 }
 
+// A frame from the origin, one beam a degree from `from_deg` to `to_deg`
+// off +y (towards +x), each ending where `range_at(degrees)` says (NaN: no
+// return).
+template <typename RangeAt>
+std::vector<Eigen::Vector2d> fanOfBeams(int from_deg, int to_deg, RangeAt range_at) {
+  std::vector<Eigen::Vector2d> points;
+  for (int deg = from_deg; deg <= to_deg; ++deg) {
+    const double a = deg * M_PI / 180.0;
+    points.push_back(Eigen::Vector2d(std::sin(a), std::cos(a)) * range_at(deg));
+  }
+  return points;
+}
+
+// The range to the line y = `y` along a beam `deg` degrees off +y.
+double toLineY(double y, int deg) { return y / std::cos(deg * M_PI / 180.0); }
+
+// A door that opened, a person who walked off: the remembered wall y = 1 is
+// seen through head-on, where a mirror or a pane would have returned the
+// beam, and is forgotten. Seen through only obliquely (ghosts behind a
+// mirror), or with a return on it head-on, it stays.
+TEST(SurfaceMemory, ForgetsASurfaceSeenThroughHeadOn) {
+  const auto forgetsAfter = [](const std::vector<Eigen::Vector2d>& frame, const SurfaceMemoryParams& params = {}) {
+    SurfaceMemory memory = memoryOfAWall(params);
+    memory.forgetSeenThroughHeadOn(frame, usableReturns(frame), kOrigin);
+    return memory.size() == 0;
+  };
+  const auto behind = [](int deg) { return toLineY(2.0, deg); };  // a wall 1 m behind it
+  EXPECT_TRUE(forgetsAfter(fanOfBeams(-30, 30, behind)));
+
+  // A mirror: returns on it within 2° of its normal, ghosts elsewhere.
+  EXPECT_FALSE(forgetsAfter(fanOfBeams(-30, 30, [](int deg) { return toLineY(std::abs(deg) <= 2 ? 1.0 : 2.0, deg); })));
+  // Ghosts only off the normal, no return within 5° of it (head_on_deg).
+  const auto oblique = [](int deg) { return std::abs(deg) <= 5 ? std::nan("") : toLineY(2.0, deg); };
+  EXPECT_FALSE(forgetsAfter(fanOfBeams(-30, 30, oblique)));
+  // One beam through head-on is not enough (head_on_through_beams: 2).
+  const auto one = [](int deg) { return deg == 0 || std::abs(deg) > 5 ? toLineY(2.0, deg) : std::nan(""); };
+  EXPECT_FALSE(forgetsAfter(fanOfBeams(-30, 30, one)));
+  const auto two = [](int deg) { return deg == 0 || deg == 1 || std::abs(deg) > 5 ? toLineY(2.0, deg) : std::nan(""); };
+  EXPECT_TRUE(forgetsAfter(fanOfBeams(-30, 30, two)));
+  // Something in front of the wall hides it: that says nothing of it.
+  EXPECT_FALSE(forgetsAfter(fanOfBeams(-30, 30, [](int deg) { return toLineY(0.5, deg); })));
+
+  SurfaceMemoryParams never;
+  never.head_on_through_beams = 0;
+  EXPECT_FALSE(forgetsAfter(fanOfBeams(-30, 30, behind), never));
+}
+
+TEST(SurfaceMemory, ASurfaceSeenThroughHeadOnFromBesideItsEndStays) {
+  // From (3, 0) the wall's normal through the sensor misses it: every beam
+  // meets it obliquely, as ghosts behind a mirror do.
+  SurfaceMemory memory = memoryOfAWall();
+  const Eigen::Vector2d beside{3.0, 0.0};
+  std::vector<Eigen::Vector2d> frame;
+  for (double x = -0.8; x <= 0.8; x += 0.05) frame.push_back(beside + (Eigen::Vector2d(x, 1.0) - beside) * 2.0);
+  memory.forgetSeenThroughHeadOn(frame, usableReturns(frame), beside);
+  EXPECT_EQ(memory.size(), 1u);
+}
+
 TEST(SurfaceMemory, DoesNotRememberSurfacesSeenAtGrazingIncidence) {
   SurfaceMemory memory(SurfaceMemoryParams{});
   std::vector<Eigen::Vector2d> wall;

@@ -1,6 +1,7 @@
 #include "scanfilter/filter_config.hpp"
 
-
+#include <algorithm>
+#include <cmath>
 
 #include "scanfilter/input_error.hpp"
 #include "scanfilter/yaml_section.hpp"
@@ -65,6 +66,8 @@ void readSurfaceMemory(const YamlSection& parent, SurfaceMemoryParams& m) {
   s.read("merge_angle_deg", m.merge_angle_deg);
   s.read("merge_offset", m.merge_offset);
   s.read("max_segments", m.max_segments);
+  s.read("head_on_deg", m.head_on_deg);
+  s.read("head_on_through_beams", m.head_on_through_beams);
   s.read("max_spacing", m.segments.max_spacing);
   s.read("max_deviation", m.segments.max_deviation);
   s.read("min_returns", m.segments.min_returns);
@@ -80,6 +83,8 @@ void readSurfaceMemory(const YamlSection& parent, SurfaceMemoryParams& m) {
   s.requireRange("merge_angle_deg", m.merge_angle_deg, 0.0, 45.0, "0 <= value <= 45 (degrees)");
   s.requireRange("merge_offset", m.merge_offset, 0.0, 10.0, "0 <= value <= 10 (m)");
   s.requireRange("max_segments", static_cast<double>(m.max_segments), 1, 1e7, "an integer >= 1");
+  s.requireRange("head_on_deg", m.head_on_deg, 0.0, 45.0, "0 <= value <= 45 (degrees off the normal)");
+  s.requireRange("head_on_through_beams", m.head_on_through_beams, 0, 1e6, "an integer >= 0 (0: never forget so)");
   s.requireRange("max_spacing", m.segments.max_spacing, 1e-3, 10.0, "0.001 <= value <= 10 (m)");
   s.requireRange("max_deviation", m.segments.max_deviation, 0.0, 1.0, "0 <= value <= 1 (m)");
   s.requireRange("min_returns", m.segments.min_returns, 2, 1e6, "an integer >= 2 (two returns make a line)");
@@ -125,6 +130,9 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.read("obstacle_threshold_reference_deg", config.obstacle_threshold_reference_deg);
   s.requireRange("obstacle_threshold_reference_deg", config.obstacle_threshold_reference_deg, 0.0, 90.0,
                  "0 (as given) or the angular step obs_th is for, in degrees");
+  s.read("evidence_count_reference_deg", config.evidence_count_reference_deg);
+  s.requireRange("evidence_count_reference_deg", config.evidence_count_reference_deg, 0.0, 90.0,
+                 "0 (as given) or the angular step the evidence counts are for, in degrees");
   s.read("corridor_half_width", p.corridor_half_width);
   s.read("obstacle_at_centroid", p.obstacle_at_centroid);
   s.read("require_both_sides", p.require_both_sides);
@@ -196,6 +204,13 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.rejectUnknownKeys();
 }
 
+// How many more beams the sensor sends than one at the reference step.
+double beamsPerReferenceStep(double reference_deg, const JumpFilterParams& jump) {
+  return reference_deg / jump.angular_accuracy_deg;
+}
+
+int roundedCount(double count) { return std::max(1, static_cast<int>(std::lround(count))); }
+
 }  // namespace
 
 FilterConfig parseFilterConfig(const std::string& yaml_text, const std::string& name) {
@@ -226,10 +241,20 @@ TwoStepFilterParams FilterConfig::resolve(const SensorInfo& sensor) const {
   out.jump.angular_accuracy_deg = angular_accuracy_deg.value_or(sensor.angular_accuracy_deg);
   out.jump.d_min = d_min.value_or(sensor.range_min);
   out.jump.d_max = d_max.value_or(sensor.range_max);
+  PenetrationFilterParams& p = out.penetration;
   if (obstacle_threshold_reference_deg > 0.0) {
-    const double points_per_reference_step = obstacle_threshold_reference_deg / out.jump.angular_accuracy_deg;
-    out.penetration.obstacle_threshold = static_cast<int>(
-        std::lround(static_cast<double>(params.penetration.obstacle_threshold) * points_per_reference_step));
+    const double beams = beamsPerReferenceStep(obstacle_threshold_reference_deg, out.jump);
+    p.obstacle_threshold = static_cast<int>(std::lround(p.obstacle_threshold * beams));
+  }
+  if (evidence_count_reference_deg > 0.0) {
+    // The veto counts returns near a kept one, as a surface or the mixed
+    // returns scattered behind a thin leg put them: in proportion to the
+    // beams. The rescue must still find a thin leg, whose returns on itself
+    // grow more slowly once the footprint spans several steps: measured, a
+    // proportional count lost thin legs (docs/accuracy.md, 26).
+    const double beams = beamsPerReferenceStep(evidence_count_reference_deg, out.jump);
+    p.free_space_veto_count = roundedCount(p.free_space_veto_count * beams);
+    p.rescue_min_count = roundedCount(p.rescue_min_count * std::sqrt(beams));
   }
   return out;
 }

@@ -166,8 +166,10 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
     correction_ = judgement.correction;
     unaligned_ += !judgement.judged;
     // After judging, so that a frame's own surfaces never judge it.
-    if (judgement.judged && memory_.enabled())
+    if (judgement.judged && memory_.enabled()) {
+      memory_.forgetSeenThroughHeadOn(points_, allReturns(scan), judgement.origin);
       memory_.remember(points_, keptReturns(labels), judgement.origin, scan.stamp);
+    }
   } else {
     placeFrame(scan, sensor);
   }

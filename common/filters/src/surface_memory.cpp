@@ -40,13 +40,46 @@ bool SurfaceMemory::beamPassesThrough(const Segment& s, const Eigen::Vector2d& o
   return along && *along > s.margin_a && *along < s.length - s.margin_b;
 }
 
+double SurfaceMemory::surfaceMargin(const Eigen::Vector2d& origin, const Eigen::Vector2d& p) const {
+  return params_.surface_margin + params_.surface_margin_per_m * (p - origin).norm();
+}
+
 bool SurfaceMemory::liesBeyondASurface(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now) const {
-  const double margin = params_.surface_margin + params_.surface_margin_per_m * (p - origin).norm();
+  const double margin = surfaceMargin(origin, p);
   const Eigen::Vector2d lo = origin.cwiseMin(p), hi = origin.cwiseMax(p);
   return std::any_of(segments_.begin(), segments_.end(), [&](const Segment& s) {
     const bool boxes_meet = (s.hi.array() >= lo.array()).all() && (s.lo.array() <= hi.array()).all();
     return boxes_meet && now.secondsSince(s.last_seen) <= params_.lifetime && beamPassesThrough(s, origin, p, margin);
   });
+}
+
+bool SurfaceMemory::seenThroughHeadOn(const Segment& s, std::span<const Eigen::Vector2d> points,
+                                      const BeamMask& returns, const Eigen::Vector2d& origin) const {
+  // Only a segment the sensor faces: the foot of its perpendicular inside it.
+  const double foot = s.unit.dot(origin - s.a);
+  if (foot <= s.margin_a || foot >= s.length - s.margin_b) return false;
+  const double max_along = std::sin(degreesToRadians(params_.head_on_deg));
+  int through = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!returns[i]) continue;
+    const Eigen::Vector2d beam = points[i] - origin;
+    const double length = beam.norm();
+    if (!(length > 0.0) || std::abs(s.unit.dot(beam)) > max_along * length) continue;  // not head-on
+    const std::optional<double> along = s.crossingAlong(origin, points[i]);
+    const double off = std::abs(s.normal.dot(points[i] - s.a));
+    if (off < surfaceMargin(origin, points[i])) {
+      if (s.unit.dot(points[i] - s.a) > 0.0 && s.unit.dot(points[i] - s.a) < s.length) return false;  // ends on it
+      continue;
+    }
+    if (along && *along > s.margin_a && *along < s.length - s.margin_b) ++through;
+  }
+  return through >= params_.head_on_through_beams;
+}
+
+void SurfaceMemory::forgetSeenThroughHeadOn(std::span<const Eigen::Vector2d> points, const BeamMask& returns,
+                                            const Eigen::Vector2d& origin) {
+  if (params_.head_on_through_beams <= 0) return;
+  std::erase_if(segments_, [&](const Segment& s) { return seenThroughHeadOn(s, points, returns, origin); });
 }
 
 SurfaceMemory::Segment SurfaceMemory::segmentBetween(const Eigen::Vector2d& a, const Eigen::Vector2d& b,

@@ -24,6 +24,8 @@ struct SurfaceMemoryParams {
   double merge_angle_deg = 10.0;            // degrees, a surface seen again: directions within this
   double merge_offset = 0.30;               // m, ... and the new segment's ends this near the remembered line
   std::size_t max_segments = 2000;          // the oldest go first beyond this (stamps that do not advance)
+  double head_on_deg = 5.0;                 // degrees off a segment's normal where a mirror or pane returns the beam
+  int head_on_through_beams = 2;            // beams seen through it there, none on it: it is gone; 0: never
   StraightSegmentParams segments;
 };
 
@@ -58,6 +60,14 @@ class SurfaceMemory {
   // remembered surface (one seen within the lifetime: judging without
   // forgetting first still ignores older ones).
   bool liesBeyondASurface(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now) const;
+  // Forgets the segments a frame saw through head-on. A mirror or a pane
+  // returns the beam within head_on_deg of its normal (its specular lobe),
+  // so a frame whose beams there pass through it, none ending on it, shows
+  // that nothing stands there now: a door that opened, a person who walked
+  // off. Without this, returns behind such a segment are deleted until it
+  // expires. `returns`: every beam with a return, whatever its label.
+  void forgetSeenThroughHeadOn(std::span<const Eigen::Vector2d> points, const BeamMask& returns,
+                               const Eigen::Vector2d& origin);
   // Remembers the straight surfaces of one frame's usable returns.
   void remember(std::span<const Eigen::Vector2d> points, const BeamMask& usable, const Eigen::Vector2d& origin,
                 Stamp stamp);
@@ -97,6 +107,9 @@ class SurfaceMemory {
   std::vector<Segment> merged(const Fresh& now, const std::vector<Segment>& olds) const;
   bool beamPassesThrough(const Segment& s, const Eigen::Vector2d& origin, const Eigen::Vector2d& p,
                          double surface_margin) const;
+  double surfaceMargin(const Eigen::Vector2d& origin, const Eigen::Vector2d& p) const;
+  bool seenThroughHeadOn(const Segment& s, std::span<const Eigen::Vector2d> points, const BeamMask& returns,
+                         const Eigen::Vector2d& origin) const;
   void keepWithinBound();
 
   SurfaceMemoryParams params_;
