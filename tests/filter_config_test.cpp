@@ -109,9 +109,9 @@ TEST(FilterConfig, AutoValuesComeFromTheSensor) {
   EXPECT_DOUBLE_EQ(p.jump.angular_accuracy_deg, 0.5);
 }
 
-// obs_th and the rescue's evidence count returns, and a surface gives more of
-// them the finer the step: each is given for its reference step and scaled
-// (the rescue's count with the square root of the beams).
+// obs_th and the free-space check's veto count returns, and a surface gives
+// more of them the finer the step: each is given for its reference step and
+// scaled. The rescue's count is not (measured on the real logs).
 TEST(FilterConfig, CountsOfReturnsFollowTheAngularStep) {
   const FilterConfig shipped = loadFilterConfig(SCANFILTER_SOURCE_DIR "/config/filter.yaml");
   const auto at = [&](const FilterConfig& c, double step_deg) {
@@ -121,26 +121,21 @@ TEST(FilterConfig, CountsOfReturnsFollowTheAngularStep) {
   };
   const PenetrationFilterParams one_degree = at(shipped, 1.0);
   EXPECT_EQ(one_degree.obstacle_threshold, 2);
-  EXPECT_EQ(one_degree.rescue_min_count, 5);
   EXPECT_EQ(one_degree.free_space_veto_count, 2);
+  EXPECT_EQ(one_degree.rescue_min_count, 5);
   const PenetrationFilterParams quarter = at(shipped, 0.25);
   EXPECT_EQ(quarter.obstacle_threshold, 8);
-  EXPECT_EQ(quarter.rescue_min_count, 10) << "with the square root of the beams";
-  EXPECT_EQ(quarter.free_space_veto_count, 8) << "with the beams";
-  const PenetrationFilterParams hokuyo = at(shipped, 0.3515625);  // URG-04LX: 1,024 steps a turn
-  EXPECT_EQ(hokuyo.rescue_min_count, 8);
-  EXPECT_EQ(hokuyo.free_space_veto_count, 6);
-  const PenetrationFilterParams coarse = at(shipped, 5.0);
-  EXPECT_EQ(coarse.rescue_min_count, 2);
-  EXPECT_EQ(coarse.free_space_veto_count, 1) << "0.4 rounds to 0, and a count of 0 would need no evidence";
+  EXPECT_EQ(quarter.free_space_veto_count, 8);
+  EXPECT_EQ(quarter.rescue_min_count, 5);
+  EXPECT_EQ(at(shipped, 0.3515625).free_space_veto_count, 6);  // URG-04LX: 1,024 steps a turn
+  EXPECT_EQ(at(shipped, 5.0).free_space_veto_count, 1) << "0.4 rounds to 0, and a veto of 0 would need no evidence";
 
   const FilterConfig as_given = parseFilterConfig(
-      "penetration_filter:\n  obstacle_threshold_reference_deg: 0\n  evidence_count_reference_deg: 0\n", "f.yaml");
+      "penetration_filter:\n  obstacle_threshold_reference_deg: 0\n  free_space_veto_reference_deg: 0\n", "f.yaml");
   const PenetrationFilterParams fixed = at(as_given, 0.25);
   EXPECT_EQ(fixed.obstacle_threshold, 2);
-  EXPECT_EQ(fixed.rescue_min_count, 5);
   EXPECT_EQ(fixed.free_space_veto_count, 2);
-  EXPECT_DOUBLE_EQ(shipped.evidence_count_reference_deg, FilterConfig{}.evidence_count_reference_deg);
+  EXPECT_DOUBLE_EQ(shipped.free_space_veto_reference_deg, FilterConfig{}.free_space_veto_reference_deg);
 }
 
 TEST(FilterConfigErrors, NameFileLineAndKey) {
@@ -165,9 +160,9 @@ TEST(FilterConfigErrors, NameFileLineAndKey) {
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    head_on_deg: 50\n"),
             "f.yaml:3: penetration_filter.surface_memory.head_on_deg: expected 0 <= value <= 45 (degrees off the "
             "normal)");
-  EXPECT_EQ(errorOf("penetration_filter:\n  evidence_count_reference_deg: -1\n"),
-            "f.yaml:2: penetration_filter.evidence_count_reference_deg: expected 0 (as given) or the angular step the "
-            "evidence counts are for, in degrees");
+  EXPECT_EQ(errorOf("penetration_filter:\n  free_space_veto_reference_deg: -1\n"),
+            "f.yaml:2: penetration_filter.free_space_veto_reference_deg: expected 0 (as given) or the angular step "
+            "free_space_veto_count is for, in degrees");
   EXPECT_EQ(errorOf("penetration_filter:\n  free_space_veto_count: 0\n"),
             "f.yaml:2: penetration_filter.free_space_veto_count: expected an integer >= 1");
   EXPECT_EQ(errorOf("penetration_filter:\n  thin_object_max_beams: 0\n"),

@@ -130,9 +130,9 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.read("obstacle_threshold_reference_deg", config.obstacle_threshold_reference_deg);
   s.requireRange("obstacle_threshold_reference_deg", config.obstacle_threshold_reference_deg, 0.0, 90.0,
                  "0 (as given) or the angular step obs_th is for, in degrees");
-  s.read("evidence_count_reference_deg", config.evidence_count_reference_deg);
-  s.requireRange("evidence_count_reference_deg", config.evidence_count_reference_deg, 0.0, 90.0,
-                 "0 (as given) or the angular step the evidence counts are for, in degrees");
+  s.read("free_space_veto_reference_deg", config.free_space_veto_reference_deg);
+  s.requireRange("free_space_veto_reference_deg", config.free_space_veto_reference_deg, 0.0, 90.0,
+                 "0 (as given) or the angular step free_space_veto_count is for, in degrees");
   s.read("corridor_half_width", p.corridor_half_width);
   s.read("obstacle_at_centroid", p.obstacle_at_centroid);
   s.read("require_both_sides", p.require_both_sides);
@@ -209,8 +209,6 @@ double beamsPerReferenceStep(double reference_deg, const JumpFilterParams& jump)
   return reference_deg / jump.angular_accuracy_deg;
 }
 
-int roundedCount(double count) { return std::max(1, static_cast<int>(std::lround(count))); }
-
 }  // namespace
 
 FilterConfig parseFilterConfig(const std::string& yaml_text, const std::string& name) {
@@ -246,15 +244,11 @@ TwoStepFilterParams FilterConfig::resolve(const SensorInfo& sensor) const {
     const double beams = beamsPerReferenceStep(obstacle_threshold_reference_deg, out.jump);
     p.obstacle_threshold = static_cast<int>(std::lround(p.obstacle_threshold * beams));
   }
-  if (evidence_count_reference_deg > 0.0) {
-    // The veto counts returns near a kept one, as a surface or the mixed
-    // returns scattered behind a thin leg put them: in proportion to the
-    // beams. The rescue must still find a thin leg, whose returns on itself
-    // grow more slowly once the footprint spans several steps: measured, a
-    // proportional count lost thin legs (docs/accuracy.md, 26).
-    const double beams = beamsPerReferenceStep(evidence_count_reference_deg, out.jump);
-    p.free_space_veto_count = roundedCount(p.free_space_veto_count * beams);
-    p.rescue_min_count = roundedCount(p.rescue_min_count * std::sqrt(beams));
+  if (free_space_veto_reference_deg > 0.0) {
+    // rescue_min_count is not scaled: measured, scaling it too lost more
+    // re-observed returns on the real logs (docs/accuracy.md, 26).
+    const double beams = beamsPerReferenceStep(free_space_veto_reference_deg, out.jump);
+    p.free_space_veto_count = std::max(1, static_cast<int>(std::lround(p.free_space_veto_count * beams)));
   }
   return out;
 }

@@ -20,13 +20,11 @@ struct FilterConfig {
   // the angular step: obs_th is given for this step (degrees) and scaled to
   // the sensor's (rounded). 0: obs_th as given, whatever the sensor.
   double obstacle_threshold_reference_deg = 1.0;
-  // The rescue's evidence counts returns too (rescue_min_count,
-  // free_space_veto_count), and a surface near a point gets more of them the
-  // finer the step, as do the mixed returns a fine scanner scatters behind
-  // an edge: both counts are given for this step (degrees) and scaled to the
-  // sensor's, the veto with the beams a turn and the rescue with their
-  // square root (rounded, at least 1). 0: as given, whatever the sensor.
-  double evidence_count_reference_deg = 1.0;
+  // free_space_veto_count counts returns of other frames near a point, and
+  // a surface, or the mixed returns a fine scanner scatters behind an edge,
+  // puts more of them there the finer the step: it is given for this step
+  // (degrees) and scaled to the sensor's (rounded, at least 1). 0: as given.
+  double free_space_veto_reference_deg = 1.0;
 
   // Parameters for one sensor, with every `auto` value filled in.
   TwoStepFilterParams resolve(const SensorInfo& sensor) const;

@@ -76,9 +76,7 @@ struct PenetrationFilterParams {
   // or two beams, so a thin leg is always lost. A jump point is restored when
   // the cached frames put at least `rescue_min_count` returns in its cell:
   // persistent evidence that a jump point, which moves with the viewpoint,
-  // does not leave. Off reproduces the paper. The count here is the one the
-  // filter uses; config/filter.yaml gives it for 1° steps and
-  // FilterConfig::resolve scales it to the sensor.
+  // does not leave. Off reproduces the paper.
   bool rescue_persistent_points = true;
   int rescue_min_count = 5;
   // Evidence counts the cached returns of the cells whose centroid lies within
@@ -119,8 +117,9 @@ struct PenetrationFilterParams {
   // surface there. One was enough until it was measured: the mixed returns
   // of a thin leg, seen from other places, scatter behind it, and one of
   // them near another was vetoing the check for most of them
-  // (docs/accuracy.md, Beyond the paper 19). Scaled to the sensor as
-  // rescue_min_count is (FilterConfig::resolve).
+  // (docs/accuracy.md, Beyond the paper 19). The count the filter uses:
+  // config/filter.yaml gives it for 1° steps and FilterConfig::resolve
+  // scales it to the sensor's.
   int free_space_veto_count = 2;
   // Beyond the paper (thin_object_check.hpp; docs/accuracy.md, Beyond the
   // paper 25): a kept return in a stretch of at most thin_object_max_beams
