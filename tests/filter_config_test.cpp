@@ -82,6 +82,9 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(sm.segments.min_length, dm.segments.min_length);
   EXPECT_EQ(sm.segments.end_step, dm.segments.end_step);
   EXPECT_FALSE(shipped.angular_accuracy_deg) << "auto: from the sensor";
+  const FilterConfig built_in;
+  EXPECT_EQ(shipped.obstacle_threshold_reference_deg, built_in.obstacle_threshold_reference_deg);
+  EXPECT_EQ(shipped.free_space_veto_reference_deg, built_in.free_space_veto_reference_deg);
 }
 
 TEST(FilterConfig, PaperLiteralPresetLoads) {
@@ -135,7 +138,6 @@ TEST(FilterConfig, CountsOfReturnsFollowTheAngularStep) {
   const PenetrationFilterParams fixed = at(as_given, 0.25);
   EXPECT_EQ(fixed.obstacle_threshold, 2);
   EXPECT_EQ(fixed.free_space_veto_count, 2);
-  EXPECT_DOUBLE_EQ(shipped.free_space_veto_reference_deg, FilterConfig{}.free_space_veto_reference_deg);
 }
 
 TEST(FilterConfigErrors, NameFileLineAndKey) {
@@ -157,9 +159,12 @@ TEST(FilterConfigErrors, NameFileLineAndKey) {
             "the surface must not count)");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    behind_margin: 0.2\n"),
             "f.yaml:3: penetration_filter.surface_memory.behind_margin: unknown key");
-  EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    head_on_deg: 50\n"),
-            "f.yaml:3: penetration_filter.surface_memory.head_on_deg: expected 0 <= value <= 45 (degrees off the "
-            "normal)");
+  EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    head_on_deg: 0\n"),
+            "f.yaml:3: penetration_filter.surface_memory.head_on_deg: expected 0 < value <= 45 (degrees off the "
+            "normal; head_on_through_beams: 0 turns the rule off)");
+  EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    head_on_through_beams: -1\n"),
+            "f.yaml:3: penetration_filter.surface_memory.head_on_through_beams: expected an integer >= 0 (0: never "
+            "forget so)");
   EXPECT_EQ(errorOf("penetration_filter:\n  free_space_veto_reference_deg: -1\n"),
             "f.yaml:2: penetration_filter.free_space_veto_reference_deg: expected 0 (as given) or the angular step "
             "free_space_veto_count is for, in degrees");

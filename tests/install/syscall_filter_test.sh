@@ -74,8 +74,12 @@ traced() {  # name binary args...: runs it under strace in the background (PID_O
   strace -f -qq -o "$WORK/$name.strace" "$@" > "$WORK/$name.log" 2>&1 &
   local tracer=$! pid=""
   PIDS+=("$tracer")
+  # The child running the binary, matched by its command line: strace forks
+  # short-lived children of its own at start (probing ptrace and seccomp),
+  # and taking one of those for the service left the service unkilled and
+  # failed the SIGTERM below at random.
   for _ in $(seq 1 100); do
-    pid=$(pgrep -P "$tracer") && break
+    pid=$(pgrep -P "$tracer" -f -- "^$1( |\$)") && break
     sleep 0.1
   done
   [ -n "$pid" ] || fail "$name did not start under strace"

@@ -83,7 +83,8 @@ void readSurfaceMemory(const YamlSection& parent, SurfaceMemoryParams& m) {
   s.requireRange("merge_angle_deg", m.merge_angle_deg, 0.0, 45.0, "0 <= value <= 45 (degrees)");
   s.requireRange("merge_offset", m.merge_offset, 0.0, 10.0, "0 <= value <= 10 (m)");
   s.requireRange("max_segments", static_cast<double>(m.max_segments), 1, 1e7, "an integer >= 1");
-  s.requireRange("head_on_deg", m.head_on_deg, 0.0, 45.0, "0 <= value <= 45 (degrees off the normal)");
+  s.requireRange("head_on_deg", m.head_on_deg, 1e-3, 45.0,
+                 "0 < value <= 45 (degrees off the normal; head_on_through_beams: 0 turns the rule off)");
   s.requireRange("head_on_through_beams", m.head_on_through_beams, 0, 1e6, "an integer >= 0 (0: never forget so)");
   s.requireRange("max_spacing", m.segments.max_spacing, 1e-3, 10.0, "0.001 <= value <= 10 (m)");
   s.requireRange("max_deviation", m.segments.max_deviation, 0.0, 1.0, "0 <= value <= 1 (m)");

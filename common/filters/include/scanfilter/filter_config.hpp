@@ -20,9 +20,9 @@ struct FilterConfig {
   // the angular step: obs_th is given for this step (degrees) and scaled to
   // the sensor's (rounded). 0: obs_th as given, whatever the sensor.
   double obstacle_threshold_reference_deg = 1.0;
-  // free_space_veto_count counts returns of other frames near a point, and
-  // a surface, or the mixed returns a fine scanner scatters behind an edge,
-  // puts more of them there the finer the step: it is given for this step
+  // A surface, or the trail of mixed returns behind an edge, puts more
+  // returns near a point the finer the step, so free_space_veto_count (a
+  // count of other frames' returns near a point) is given for this step
   // (degrees) and scaled to the sensor's (rounded, at least 1). 0: as given.
   double free_space_veto_reference_deg = 1.0;
 

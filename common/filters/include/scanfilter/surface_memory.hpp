@@ -88,6 +88,8 @@ class SurfaceMemory {
     double margin_b = 0.0;
 
     Eigen::Vector2d b() const { return a + unit * length; }
+    // Whether a point `along` the segment from a lies inside its end margins.
+    bool insideEnds(double along) const { return along > margin_a && along < length - margin_b; }
     // Where the line from p0 to p1 crosses this segment's line, as a
     // distance along it from a; nullopt when both lie on one side.
     std::optional<double> crossingAlong(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1) const;
