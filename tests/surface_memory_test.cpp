@@ -143,21 +143,24 @@ TEST(SurfaceMemory, ForgetsASurfaceTheSensorDroveThrough) {
   EXPECT_EQ(memory.size(), 0u);
 }
 
-// A frame from the origin, one beam a degree from `from_deg` to `to_deg`
-// off +y (towards +x), each ending where `range_at(degrees)` says (NaN: no
-// return).
+// A frame from `from`, one beam a degree from `from_deg` to `to_deg` off +y
+// (towards +x), each ending where `range_at(degrees)` says (NaN: no return).
 template <typename RangeAt>
-std::vector<Eigen::Vector2d> fanOfBeams(int from_deg, int to_deg, RangeAt range_at) {
+std::vector<Eigen::Vector2d> fanOfBeams(const Eigen::Vector2d& from, int from_deg, int to_deg, RangeAt range_at) {
   std::vector<Eigen::Vector2d> points;
   for (int deg = from_deg; deg <= to_deg; ++deg) {
     const double a = degreesToRadians(deg);
-    points.push_back(Eigen::Vector2d(std::sin(a), std::cos(a)) * range_at(deg));
+    points.push_back(from + Eigen::Vector2d(std::sin(a), std::cos(a)) * range_at(deg));
   }
   return points;
 }
+template <typename RangeAt>
+std::vector<Eigen::Vector2d> fanOfBeams(int from_deg, int to_deg, RangeAt range_at) {
+  return fanOfBeams(kOrigin, from_deg, to_deg, range_at);
+}
 
-// The range to the line y = `y` along a beam `deg` degrees off +y.
-double toLineY(double y, int deg) { return y / std::cos(degreesToRadians(deg)); }
+// The range from y = `from_y` to the line y = `y` along a beam `deg` degrees off +y.
+double toLineY(double y, int deg, double from_y = 0.0) { return (y - from_y) / std::cos(degreesToRadians(deg)); }
 
 // A door that opened, a person who walked off: the remembered wall y = 1 is
 // seen through head-on, where a mirror or a pane would have returned the
@@ -189,11 +192,7 @@ TEST(SurfaceMemory, ForgetsASurfaceSeenThroughHeadOn) {
   // remembered stretch does not reach there) says nothing of it either.
   SurfaceMemory memory = memoryOfAWall();
   const Eigen::Vector2d beside_end{2.0, 0.0};
-  std::vector<Eigen::Vector2d> past_end;
-  for (int deg = -3; deg <= 3; ++deg) {
-    const double a = degreesToRadians(deg);
-    past_end.push_back(beside_end + Eigen::Vector2d(std::sin(a), std::cos(a)) * toLineY(1.0, deg));
-  }
+  const auto past_end = fanOfBeams(beside_end, -3, 3, [](int deg) { return toLineY(1.0, deg); });
   memory.forgetSeenThroughHeadOn(past_end, usableReturns(past_end), beside_end);
   EXPECT_EQ(memory.size(), 1u);
 
@@ -209,11 +208,7 @@ TEST(SurfaceMemory, ForgetsASurfaceSeenThroughHeadOn) {
 TEST(SurfaceMemory, AWallSeenThroughHeadOnOnlyPastItsEndStays) {
   SurfaceMemory memory = memoryOfAWall();
   const Eigen::Vector2d near_end{1.1, -3.0};  // 4 m from y = 1: head-on beams cross x in [0.75, 1.45]
-  std::vector<Eigen::Vector2d> frame;
-  for (int deg = -30; deg <= 30; ++deg) {
-    const double a = degreesToRadians(deg);
-    frame.push_back(near_end + Eigen::Vector2d(std::sin(a), std::cos(a)) * toLineY(6.0, deg));  // 2 m behind it
-  }
+  const auto frame = fanOfBeams(near_end, -30, 30, [](int deg) { return toLineY(3.0, deg, -3.0); });  // 2 m behind
   memory.forgetSeenThroughHeadOn(frame, usableReturns(frame), near_end);
   EXPECT_EQ(memory.size(), 1u);
 }
