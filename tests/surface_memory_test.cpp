@@ -75,6 +75,22 @@ TEST(StraightSegments, MarksTheEndsTheFrameSawPast) {
   EXPECT_FALSE(segmentsOf(points)[0].a_seen_past);
 }
 
+// A full turn whose first beam points along +x: the wall x = 1 lies across
+// its seam, half at the first beams and half at the last.
+TEST(StraightSegments, AFullTurnJoinsAWallAcrossItsSeam) {
+  std::vector<Eigen::Vector2d> turn;
+  for (int deg = 0; deg < 360; ++deg) {
+    const double a = degreesToRadians(deg);
+    const Eigen::Vector2d direction{std::cos(a), std::sin(a)};
+    turn.push_back(std::abs(deg % 360 - (deg < 180 ? 0 : 360)) <= 30 ? direction / direction.x() : kNoReturn);
+  }
+  const auto across = straightSegments(turn, usableReturns(turn), kOrigin, StraightSegmentParams{}, true);
+  ASSERT_EQ(across.size(), 1u);
+  EXPECT_NEAR(std::abs(across[0].a.y() - across[0].b.y()), 2.0 * std::tan(degreesToRadians(30)), 0.01);
+  EXPECT_EQ(straightSegments(turn, usableReturns(turn), kOrigin, StraightSegmentParams{}, false).size(), 2u)
+      << "a partial scan's ends are no neighbours";
+}
+
 // A memory that has seen the wall y = 1, x in [-1, 1], from the origin at t = 0.
 SurfaceMemory memoryOfAWall(const SurfaceMemoryParams& params = {}) {
   SurfaceMemory memory(params);

@@ -168,7 +168,7 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
     // After judging, so that a frame's own surfaces never judge it.
     if (judgement.judged && memory_.enabled()) {
       memory_.forgetSeenThroughHeadOn(points_, allReturns(scan), judgement.origin);
-      memory_.remember(points_, keptReturns(labels), judgement.origin, scan.stamp);
+      memory_.remember(points_, keptReturns(labels), judgement.origin, scan.stamp, isFullTurn(scan));
     }
   } else {
     placeFrame(scan, sensor);

@@ -46,36 +46,57 @@ void splitAndFit(std::span<const Eigen::Vector2d> piece, std::span<const Eigen::
   fitPiece(piece, whole, params, out);
 }
 
+// Where a full turn's runs start: a beam whose neighbour before it does not
+// join it (no usable return on either, or too far apart). 0 when every
+// beam joins the next, or the scan is not a full turn.
+std::size_t firstBeamAfterABreak(std::span<const Eigen::Vector2d> points, const BeamMask& usable, bool full_turn,
+                                 double spacing_sq) {
+  const std::size_t n = points.size();
+  if (!full_turn) return 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t before = (i + n - 1) % n;
+    if (!usable[i] || !usable[before] || (points[i] - points[before]).squaredNorm() > spacing_sq) return i;
+  }
+  return 0;
+}
+
 }  // namespace
 
 std::vector<StraightSegment> straightSegments(std::span<const Eigen::Vector2d> points, const BeamMask& usable,
-                                              const Eigen::Vector2d& origin, const StraightSegmentParams& params) {
+                                              const Eigen::Vector2d& origin, const StraightSegmentParams& params,
+                                              bool full_turn) {
   std::vector<StraightSegment> out;
   std::vector<Eigen::Vector2d> run;
-  std::size_t first = 0;  // the run's first beam
+  const auto n = static_cast<std::ptrdiff_t>(points.size());
   const double spacing_sq = params.max_spacing * params.max_spacing;
-  const auto seenPast = [&](std::ptrdiff_t beam, const Eigen::Vector2d& end) {
-    if (beam < 0 || beam >= static_cast<std::ptrdiff_t>(points.size())) return false;
-    const auto j = static_cast<std::size_t>(beam);
+  // Beams are walked from `start`, in positions 0..n-1; on a full turn the
+  // walk wraps, so that a surface across the seam is one run.
+  const auto start = static_cast<std::ptrdiff_t>(firstBeamAfterABreak(points, usable, full_turn, spacing_sq));
+  const auto beamAt = [&](std::ptrdiff_t position) { return static_cast<std::size_t>((start + position) % n); };
+  std::ptrdiff_t first = 0;  // the run's first position
+  const auto seenPast = [&](std::ptrdiff_t position, const Eigen::Vector2d& end) {
+    if (!full_turn && (start + position < 0 || start + position >= n)) return false;
+    const std::size_t j = beamAt((position + n) % n);
     return usable[j] && (points[j] - origin).norm() > (end - origin).norm() + params.end_step;
   };
-  const auto finishRun = [&](std::size_t end) {  // the run is beams [first, end)
+  const auto finishRun = [&](std::ptrdiff_t end) {  // the run is positions [first, end)
     const std::size_t before = out.size();
     splitAndFit(run, run, params, out);
     for (std::size_t k = before; k < out.size(); ++k) {
-      out[k].a_seen_past = out[k].a_seen_past && seenPast(static_cast<std::ptrdiff_t>(first) - 1, run.front());
-      out[k].b_seen_past = out[k].b_seen_past && seenPast(static_cast<std::ptrdiff_t>(end), run.back());
+      out[k].a_seen_past = out[k].a_seen_past && seenPast(first - 1, run.front());
+      out[k].b_seen_past = out[k].b_seen_past && seenPast(end, run.back());
     }
     run.clear();
   };
-  for (std::size_t i = 0; i < points.size(); ++i) {
+  for (std::ptrdiff_t position = 0; position < n; ++position) {
+    const std::size_t i = beamAt(position);
     const bool joins = usable[i] && (run.empty() || (points[i] - run.back()).squaredNorm() <= spacing_sq);
-    if (!joins && !run.empty()) finishRun(i);
+    if (!joins && !run.empty()) finishRun(position);
     if (!usable[i]) continue;
-    if (run.empty()) first = i;
+    if (run.empty()) first = position;
     run.push_back(points[i]);
   }
-  if (!run.empty()) finishRun(points.size());
+  if (!run.empty()) finishRun(n);
   return out;
 }
 

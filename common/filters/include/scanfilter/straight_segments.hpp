@@ -35,8 +35,10 @@ struct StraightSegmentParams {
 // each other, split recursively where a return lies more than max_deviation
 // off the chord, each piece fitted by least squares. `points` are the
 // returns in any one frame of reference (NaN without a return), `origin` the
-// sensor in the same frame.
+// sensor in the same frame. On a full turn (`full_turn`) the last beam
+// neighbours the first, so a surface across the scan's seam is one segment.
 std::vector<StraightSegment> straightSegments(std::span<const Eigen::Vector2d> points, const BeamMask& usable,
-                                              const Eigen::Vector2d& origin, const StraightSegmentParams& params);
+                                              const Eigen::Vector2d& origin, const StraightSegmentParams& params,
+                                              bool full_turn = false);
 
 }  // namespace scanfilter
