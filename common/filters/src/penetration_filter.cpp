@@ -363,16 +363,14 @@ bool PenetrationFilter::objectInFootprint(const Eigen::Vector2d& origin, const E
     // A cell's position lies in the cell, so the cells of the box hold every
     // position within it.
     const double pad = thin_objects_.halfWidthAt(to, angle_step);
-    bool found = false;
     // Cells holding obs_th returns count, one fewer than an obstacle needs:
     // most of a thin leg's returns are mixed and land elsewhere.
-    grid_.forEachCellHoldingIn(grid_.cellOf(a.cwiseMin(b).array() - pad), grid_.cellOf(a.cwiseMax(b).array() + pad),
-                               params_.obstacle_threshold, [&](CellIndex c) {
-                                 if (found) return;
-                                 const Eigen::Vector2d q = obstaclePosition(c);
-                                 found = countsAsObstacle(q) &&
-                                         thin_objects_.inFootprintInFront(origin, p, q, angle_step);
-                               });
+    const bool found = grid_.anyCellHoldingIn(
+        grid_.cellOf(a.cwiseMin(b).array() - pad), grid_.cellOf(a.cwiseMax(b).array() + pad),
+        params_.obstacle_threshold, [&](CellIndex c) {
+          const Eigen::Vector2d q = obstaclePosition(c);
+          return countsAsObstacle(q) && thin_objects_.inFootprintInFront(origin, p, q, angle_step);
+        });
     if (found) return true;
   }
   return false;

@@ -46,13 +46,12 @@ void splitAndFit(std::span<const Eigen::Vector2d> piece, std::span<const Eigen::
   fitPiece(piece, whole, params, out);
 }
 
-// Where a full turn's runs start: a beam whose neighbour before it does not
-// join it (no usable return on either, or too far apart). 0 when every
-// beam joins the next, or the scan is not a full turn.
-std::size_t firstBeamAfterABreak(std::span<const Eigen::Vector2d> points, const BeamMask& usable, bool full_turn,
+// Where a full turn's runs start: a beam whose neighbour before it (across
+// the seam for the first) does not join it (no usable return on either, or
+// too far apart). 0 when every beam joins the next.
+std::size_t firstBeamAfterABreak(std::span<const Eigen::Vector2d> points, const BeamMask& usable,
                                  double spacing_sq) {
   const std::size_t n = points.size();
-  if (!full_turn) return 0;
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t before = (i + n - 1) % n;
     if (!usable[i] || !usable[before] || (points[i] - points[before]).squaredNorm() > spacing_sq) return i;
@@ -71,11 +70,12 @@ std::vector<StraightSegment> straightSegments(std::span<const Eigen::Vector2d> p
   const double spacing_sq = params.max_spacing * params.max_spacing;
   // Beams are walked from `start`, in positions 0..n-1; on a full turn the
   // walk wraps, so that a surface across the seam is one run.
-  const auto start = static_cast<std::ptrdiff_t>(firstBeamAfterABreak(points, usable, full_turn, spacing_sq));
+  const auto start =
+      full_turn ? static_cast<std::ptrdiff_t>(firstBeamAfterABreak(points, usable, spacing_sq)) : std::ptrdiff_t{0};
   const auto beamAt = [&](std::ptrdiff_t position) { return static_cast<std::size_t>((start + position) % n); };
   std::ptrdiff_t first = 0;  // the run's first position
   const auto seenPast = [&](std::ptrdiff_t position, const Eigen::Vector2d& end) {
-    if (!full_turn && (start + position < 0 || start + position >= n)) return false;
+    if (!full_turn && (position < 0 || position >= n)) return false;  // a partial scan starts at 0
     const std::size_t j = beamAt((position + n) % n);
     return usable[j] && (points[j] - origin).norm() > (end - origin).norm() + params.end_step;
   };

@@ -100,16 +100,14 @@ class PenetrationGrid {
     });
   }
 
-  // Calls fn(cell) for every cell in lo..hi (inclusive) holding at least
-  // `min_count` points (at least one), obstacle or not: a leg thinner than
-  // the footprint leaves fewer returns on itself than an obstacle needs.
-  template <typename Fn>
-  void forEachCellHoldingIn(CellIndex lo, CellIndex hi, int min_count, Fn&& fn) const {
+  // Whether pred(cell) holds for a cell in lo..hi (inclusive) holding at
+  // least `min_count` points (at least one), obstacle or not: a leg thinner
+  // than the footprint leaves fewer returns on itself than an obstacle
+  // needs. Stops at the first such cell.
+  template <typename Pred>
+  bool anyCellHoldingIn(CellIndex lo, CellIndex hi, int min_count, Pred&& pred) const {
     const auto least = static_cast<std::uint32_t>(std::max(1, min_count));
-    anyCellIn(lo, hi, [&](const Tile& tile, CellIndex c) {
-      if (tile.counts[slot(c)] >= least) fn(c);
-      return false;
-    });
+    return anyCellIn(lo, hi, [&](const Tile& tile, CellIndex c) { return tile.counts[slot(c)] >= least && pred(c); });
   }
 
   // Whether any cell in lo..hi (inclusive) is an obstacle.
