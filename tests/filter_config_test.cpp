@@ -81,6 +81,7 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(sm.segments.min_returns, dm.segments.min_returns);
   EXPECT_EQ(sm.segments.min_length, dm.segments.min_length);
   EXPECT_EQ(sm.segments.end_step, dm.segments.end_step);
+  EXPECT_EQ(sm.segments.max_gap, dm.segments.max_gap);
   EXPECT_FALSE(shipped.angular_accuracy_deg) << "auto: from the sensor";
   const FilterConfig built_in;
   EXPECT_EQ(shipped.obstacle_threshold_reference_deg, built_in.obstacle_threshold_reference_deg);
@@ -165,6 +166,9 @@ TEST(FilterConfigErrors, NameFileLineAndKey) {
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    head_on_through_beams: -1\n"),
             "f.yaml:3: penetration_filter.surface_memory.head_on_through_beams: expected an integer >= 0 (0: never "
             "forget so)");
+  EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    max_gap: -0.1\n"),
+            "f.yaml:3: penetration_filter.surface_memory.max_gap: expected 0 <= value <= 10 (m; 0: off)");
+  EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    max_gap: 0\n"), "no error");
   EXPECT_EQ(errorOf("penetration_filter:\n  free_space_veto_reference_deg: -1\n"),
             "f.yaml:2: penetration_filter.free_space_veto_reference_deg: expected 0 (as given) or the angular step "
             "free_space_veto_count is for, in degrees");

@@ -338,6 +338,49 @@ TEST(PenetrationFilter, ADoorThatOpensIsForgottenOnceSeenThroughHeadOn) {
   }
 }
 
+// A pane 1.5 m ahead that each frame sees with a hole of five beams seen
+// through (to the room's wall behind; 15 cm between the returns either side:
+// cells between them to ask the cache about), the hole `hole_deg(k)` degrees off
+// the pane's normal in frame k. The cache forgets in 0.5 s; then a frame
+// sees the pane with a hole where the last remembered frame had one: how
+// many returns through that hole are deleted.
+template <typename HoleDeg>
+std::ptrdiff_t returnsThroughAHoleDeleted(double max_gap, HoleDeg hole_deg) {
+  const SensorInfo sensor = test::simpleSensor();
+  PenetrationFilterParams p;
+  p.frame_lifetime = 0.5;  // the cache forgets the pane soon: the memory alone remembers it
+  p.alignment.enabled = false;  // an empty cache fits nothing, and the frame would not be judged
+  p.surface_memory.segments.max_gap = max_gap;
+  BothFilters filters(p);
+  const World pane = World{kRoom}.wall({1.5, -0.5}, {1.5, 0.5});
+  const auto withAHole = [&](const Pose2& pose, double t, double deg) {
+    Scan scan = castScan(pane, pose, sensor, 360, t);
+    const Scan behind = castScan(kRoom, pose, sensor, 360, t);
+    for (int d = -2; d <= 2; ++d) {
+      const std::size_t i = test::beamTowards(scan, sensor, degreesToRadians(deg + d));
+      scan.ranges[i] = behind.ranges[i];
+    }
+    return scan;
+  };
+  // Frames 4 to 9 are judged; the memory takes one every 0.25 s: 4 and 7.
+  for (int k = 0; k < 10; ++k) filters.apply(withAHole({0.02 * k, 0.0, 0.0}, 0.1 * k, hole_deg(k)), sensor);
+  const auto labels = filters.apply(withAHole({0.2, 0.0, 0.0}, 2.0, hole_deg(7)), sensor);
+  return std::count(labels.begin(), labels.end(), kMisdetected);
+}
+
+// A pane's holes move from frame to frame (a mirror or a pane returns the
+// beam only now and then): a frame's run goes on across its hole where the
+// cache holds the pane from other frames, so the memory keeps the whole
+// pane. A hole that stays where it is, is an opening: no frame holds a
+// surface there.
+TEST(PenetrationFilter, AStraightSurfaceIsRememberedAcrossHolesOtherFramesSawItIn) {
+  const auto moving = [](int k) { return 5.0 * (k % 3 - 1); };
+  const auto fixed = [](int) { return 0.0; };
+  EXPECT_EQ(returnsThroughAHoleDeleted(0.30, moving), 5) << "the memory bridged the last frame's hole";
+  EXPECT_EQ(returnsThroughAHoleDeleted(0.0, moving), 0) << "no bridging: each frame cuts the memory at its hole";
+  EXPECT_EQ(returnsThroughAHoleDeleted(0.30, fixed), 0) << "an opening stays open";
+}
+
 TEST(PenetrationFilter, PoseJumpResetsTheCache) {
   const SensorInfo sensor = test::simpleSensor();
   BothFilters filters(PenetrationFilterParams{});
@@ -604,6 +647,26 @@ TEST(PenetrationGrid, AnyObstacleInARectangleAgreesWithItsCells) {
       for (std::int32_t x = lo.x; x <= hi.x; ++x) expected = expected || grid.count({x, y}) > 2;
     ASSERT_EQ(grid.anyObstacleIn(lo, hi), expected) << "trial " << trial;
   }
+}
+
+// The surface memory's question across a gap: is every cell between two
+// returns (not their own) an obstacle, or beside one across the line.
+TEST(PenetrationGrid, ObstaclesAlongASegmentNeedAnObstacleInEveryCellBetween) {
+  PenetrationGrid grid(0.05, 2);  // three points make an obstacle
+  const auto obstacleAt = [&](const Eigen::Vector2d& p) {
+    for (int k = 0; k < 3; ++k) grid.add(p);
+  };
+  for (int cell = 0; cell <= 20; ++cell) obstacleAt({0.05 * cell + 0.01, 1.02});  // the wall y = 1.02 cached
+  EXPECT_TRUE(grid.obstaclesAlong({0.1, 1.0}, {0.9, 1.0}));
+  EXPECT_TRUE(grid.obstaclesAlong({0.1, 1.06}, {0.9, 1.06})) << "one cell off the wall still finds it";
+  EXPECT_FALSE(grid.obstaclesAlong({0.1, 1.2}, {0.9, 1.2})) << "four cells off: nothing there";
+  EXPECT_FALSE(grid.obstaclesAlong({0.5, 1.0}, {1.5, 1.0})) << "past the wall's end";
+  grid.remove({0.51, 1.02});  // one cell of the wall no obstacle: two points
+  EXPECT_FALSE(grid.obstaclesAlong({0.1, 1.0}, {0.9, 1.0})) << "a hole of one cell";
+  EXPECT_TRUE(grid.obstaclesAlong({0.1, 1.0}, {0.45, 1.0})) << "the hole is not between these";
+  EXPECT_FALSE(grid.obstaclesAlong({0.45, 1.0}, {0.6, 1.0})) << "the ends' own cells are no evidence";
+  EXPECT_TRUE(grid.obstaclesAlong({3.0, 3.0}, {3.04, 3.0})) << "in one cell, nothing cached: nothing between to ask";
+  EXPECT_TRUE(grid.obstaclesAlong({3.04, 3.0}, {3.06, 3.0})) << "in neighbouring cells: nothing between either";
 }
 
 // The thin-object check's cells: those holding at least a count, obstacle

@@ -2,6 +2,7 @@
 // which are remembered, and which later returns lie beyond them.
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -177,6 +178,76 @@ std::vector<Eigen::Vector2d> fanOfBeams(int from_deg, int to_deg, RangeAt range_
 
 // The range from y = `from_y` to the line y = `y` along a beam `deg` degrees off +y.
 double toLineY(double y, int deg, double from_y = 0.0) { return (y - from_y) / std::cos(degreesToRadians(deg)); }
+
+// The pane y = 2 seen from the origin, a beam a degree from -30 to 30 off
+// +y; the beams from 3 to `hole_to_deg` degrees end at y = `behind_y`
+// instead (NaN: no return).
+std::vector<Eigen::Vector2d> paneWithAHole(double behind_y, int hole_to_deg = 7) {
+  return fanOfBeams(-30, 30, [&](int deg) { return toLineY(deg >= 3 && deg <= hole_to_deg ? behind_y : 2.0, deg); });
+}
+
+std::vector<StraightSegment> segmentsAcrossGaps(const std::vector<Eigen::Vector2d>& points,
+                                                const SurfaceAcrossGap& surface_across_gap,
+                                                const StraightSegmentParams& params = {}) {
+  return straightSegments(points, usableReturns(points), kOrigin, params, false, surface_across_gap);
+}
+
+const SurfaceAcrossGap kSurfaceEverywhere = [](const Eigen::Vector2d&, const Eigen::Vector2d&) { return true; };
+
+TEST(StraightSegments, ARunGoesOnAcrossAHoleWhereASurfaceStandsElsewhere) {
+  const auto pane = paneWithAHole(5.0);  // 0.21 m between the returns either side
+  std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> asked;
+  const auto across = segmentsAcrossGaps(pane, [&](const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
+    asked.emplace_back(from, to);
+    return true;
+  });
+  ASSERT_EQ(across.size(), 1u);
+  EXPECT_NEAR(across[0].a.x(), -2.0 * std::tan(degreesToRadians(30)), 0.01);
+  EXPECT_NEAR(across[0].b.x(), 2.0 * std::tan(degreesToRadians(30)), 0.01);
+  ASSERT_EQ(asked.size(), 1u) << "asked once, about the returns either side of the hole";
+  EXPECT_LT((asked[0].first - pane[32]).norm(), 1e-9);
+  EXPECT_LT((asked[0].second - pane[38]).norm(), 1e-9);
+  EXPECT_EQ(segmentsAcrossGaps(pane, [](const Eigen::Vector2d&, const Eigen::Vector2d&) { return false; }).size(), 2u)
+      << "no surface there elsewhere: an opening";
+  EXPECT_EQ(segmentsOf(pane).size(), 2u) << "nobody to ask";
+  StraightSegmentParams off;
+  off.max_gap = 0.0;
+  EXPECT_EQ(segmentsAcrossGaps(pane, kSurfaceEverywhere, off).size(), 2u);
+  const auto dark = paneWithAHole(std::numeric_limits<double>::quiet_NaN());
+  EXPECT_EQ(segmentsAcrossGaps(dark, kSurfaceEverywhere).size(), 1u) << "beams without a return are a hole too";
+}
+
+// The segments of `points` across gaps where a surface stands everywhere are
+// those without the question asked, and so are the ends the frame saw past
+// (a run joined across a step and split again would lose them).
+void expectNoGapBridged(const std::vector<Eigen::Vector2d>& points) {
+  const auto asked = segmentsAcrossGaps(points, kSurfaceEverywhere), unasked = segmentsOf(points);
+  ASSERT_EQ(asked.size(), unasked.size());
+  for (std::size_t k = 0; k < asked.size(); ++k) {
+    EXPECT_LT((asked[k].a - unasked[k].a).norm(), 1e-9) << "segment " << k;
+    EXPECT_LT((asked[k].b - unasked[k].b).norm(), 1e-9) << "segment " << k;
+    EXPECT_EQ(asked[k].a_seen_past, unasked[k].a_seen_past) << "segment " << k;
+    EXPECT_EQ(asked[k].b_seen_past, unasked[k].b_seen_past) << "segment " << k << ": the hole is seen past";
+  }
+}
+
+TEST(StraightSegments, OnlyANarrowHoleSeenThroughBetweenReturnsOfOneLine) {
+  ASSERT_EQ(segmentsAcrossGaps(paneWithAHole(5.0), kSurfaceEverywhere).size(), 1u);
+  {
+    SCOPED_TRACE("0.39 m between the returns either side: wider than max_gap");
+    expectNoGapBridged(paneWithAHole(5.0, 12));
+  }
+  {
+    SCOPED_TRACE("something in front: no hole seen through");
+    expectNoGapBridged(paneWithAHole(1.0));
+  }
+  auto step = paneWithAHole(5.0);
+  for (int deg = 8; deg <= 30; ++deg) step[static_cast<std::size_t>(deg + 30)] *= 2.1 / 2.0;  // on at y = 2.1
+  {
+    SCOPED_TRACE("a step to another surface");
+    expectNoGapBridged(step);
+  }
+}
 
 // A door that opened, a person who walked off: the remembered wall y = 1 is
 // seen through head-on, where a mirror or a pane would have returned the

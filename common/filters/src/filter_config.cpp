@@ -73,6 +73,7 @@ void readSurfaceMemory(const YamlSection& parent, SurfaceMemoryParams& m) {
   s.read("min_returns", m.segments.min_returns);
   s.read("min_length", m.segments.min_length);
   s.read("end_step", m.segments.end_step);
+  s.read("max_gap", m.segments.max_gap);
   s.requireRange("lifetime", m.lifetime, 0.0, 1e6, "a value >= 0 (s; 0: off)");
   s.requireRange("min_interval", m.min_interval, 0.0, 60.0, "0 <= value <= 60 (s)");
   s.requireRange("min_beam_surface_angle_deg", m.min_beam_surface_angle_deg, 0.0, 90.0,
@@ -91,6 +92,7 @@ void readSurfaceMemory(const YamlSection& parent, SurfaceMemoryParams& m) {
   s.requireRange("min_returns", m.segments.min_returns, 2, 1e6, "an integer >= 2 (two returns make a line)");
   s.requireRange("min_length", m.segments.min_length, 1e-3, 100.0, "0.001 <= value <= 100 (m)");
   s.requireRange("end_step", m.segments.end_step, 0.0, 10.0, "0 <= value <= 10 (m)");
+  s.requireRange("max_gap", m.segments.max_gap, 0.0, 10.0, "0 <= value <= 10 (m; 0: off)");
   s.rejectUnknownKeys();
 }
 

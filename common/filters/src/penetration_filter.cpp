@@ -168,7 +168,10 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
     // After judging, so that a frame's own surfaces never judge it.
     if (judgement.judged && memory_.enabled()) {
       memory_.forgetSeenThroughHeadOn(points_, allReturns(scan), judgement.origin);
-      memory_.remember(points_, keptReturns(labels), judgement.origin, scan.stamp, isFullTurn(scan));
+      // A gap in a surface the frame sees through is bridged where the cache
+      // (other frames) holds that surface: a pane's holes, not an opening.
+      memory_.remember(points_, keptReturns(labels), judgement.origin, scan.stamp, isFullTurn(scan),
+                       [this](const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return grid_.obstaclesAlong(a, b); });
     }
   } else {
     placeFrame(scan, sensor);

@@ -1,6 +1,7 @@
 #include "scanfilter/penetration_grid.hpp"
 
 #include <cassert>
+#include <cmath>
 
 namespace scanfilter {
 
@@ -16,6 +17,23 @@ const PenetrationGrid::Tile* PenetrationGrid::findTile(std::uint64_t key) const 
 int PenetrationGrid::count(CellIndex c) const {
   const Tile* tile = findTile(tileKey(c));
   return tile ? static_cast<int>(tile->counts[slot(c)]) : 0;
+}
+
+bool PenetrationGrid::obstaclesAlong(const Eigen::Vector2d& from, const Eigen::Vector2d& to) const {
+  const CellIndex first = cellOf(from), last = cellOf(to);
+  // Across the segment: the neighbours along the grid axis nearer its normal.
+  const Eigen::Vector2d along = to - from;
+  const CellIndex across = std::abs(along.y()) > std::abs(along.x()) ? CellIndex{1, 0} : CellIndex{0, 1};
+  constexpr int kSamplesPerCell = 4;  // a quarter cell apart: every cell it crosses but for a corner
+  const auto samples = static_cast<int>(std::ceil(along.norm() / cell_size_ * kSamplesPerCell));
+  CellIndex previous = first;
+  for (int k = 1; k < samples; ++k) {
+    const CellIndex c = cellOf(from + along * (static_cast<double>(k) / samples));
+    if (c == previous || c == first || c == last) continue;
+    previous = c;
+    if (!anyObstacleIn({c.x - across.x, c.y - across.y}, {c.x + across.x, c.y + across.y})) return false;
+  }
+  return true;
 }
 
 Eigen::Vector2d PenetrationGrid::centroid(CellIndex c) const {

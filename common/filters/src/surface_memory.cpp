@@ -94,10 +94,11 @@ SurfaceMemory::Segment SurfaceMemory::segmentBetween(const Eigen::Vector2d& a, c
 
 std::vector<SurfaceMemory::Fresh> SurfaceMemory::freshSegments(std::span<const Eigen::Vector2d> points,
                                                                const BeamMask& usable, const Eigen::Vector2d& origin,
-                                                               Stamp stamp, bool full_turn) const {
+                                                               Stamp stamp, bool full_turn,
+                                                               const SurfaceAcrossGap& surface_across_gap) const {
   const double min_sin = std::sin(degreesToRadians(params_.min_beam_surface_angle_deg));
   std::vector<Fresh> fresh;
-  for (const StraightSegment& s : straightSegments(points, usable, origin, params_.segments, full_turn)) {
+  for (const StraightSegment& s : straightSegments(points, usable, origin, params_.segments, full_turn, surface_across_gap)) {
     const Segment segment = segmentBetween(s.a, s.b, stamp, params_.end_margin, params_.end_margin);
     const Eigen::Vector2d to_middle = ((s.a + s.b) / 2 - origin).normalized();
     // The sine of the angle at which the beam to its middle meets it.
@@ -153,7 +154,8 @@ std::vector<SurfaceMemory::Segment> SurfaceMemory::merged(const Fresh& fresh, co
 }
 
 void SurfaceMemory::remember(std::span<const Eigen::Vector2d> points, const BeamMask& usable,
-                             const Eigen::Vector2d& origin, Stamp stamp, bool full_turn) {
+                             const Eigen::Vector2d& origin, Stamp stamp, bool full_turn,
+                             const SurfaceAcrossGap& surface_across_gap) {
   // A stamp that did not advance is no clock (as in step 2's cache): remembered.
   if (last_remembered_) {
     const double since = stamp.secondsSince(*last_remembered_);
@@ -161,7 +163,7 @@ void SurfaceMemory::remember(std::span<const Eigen::Vector2d> points, const Beam
   }
   last_remembered_ = stamp;
   std::vector<Segment> added;
-  for (const Fresh& fresh : freshSegments(points, usable, origin, stamp, full_turn)) {
+  for (const Fresh& fresh : freshSegments(points, usable, origin, stamp, full_turn, surface_across_gap)) {
     std::vector<Segment> olds;
     std::erase_if(segments_, [&](const Segment& old) {
       if (!seenAgain(fresh.segment, old)) return false;

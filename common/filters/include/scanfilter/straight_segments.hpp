@@ -1,4 +1,5 @@
 #pragma once
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -28,7 +29,14 @@ struct StraightSegmentParams {
   int min_returns = 6;          // fewer make no segment
   double min_length = 0.30;     // m, shorter make no segment
   double end_step = 0.15;       // m, see StraightSegment::a_seen_past
+  // m, how far apart two returns a run joins across a gap may lie (see
+  // straightSegments); 0: runs never cross a gap.
+  double max_gap = 0.30;
 };
+
+// Whether a surface stands between two returns of a run, where the frame
+// itself saw through (evidence from elsewhere, such as step 2's cache).
+using SurfaceAcrossGap = std::function<bool(const Eigen::Vector2d& from, const Eigen::Vector2d& to)>;
 
 // The straight segments among the usable returns, in beam order (split and
 // fit): runs of neighbouring beams whose returns lie within max_spacing of
@@ -37,8 +45,16 @@ struct StraightSegmentParams {
 // returns in any one frame of reference (NaN without a return), `origin` the
 // sensor in the same frame. On a full turn (`full_turn`) the last beam
 // neighbours the first, so a surface across the scan's seam is one segment.
+//
+// A run also continues across a gap: beams that saw through it (returning
+// farther than the returns either side by more than end_step) or gave no
+// usable return, up to the first usable return within max_gap of the run's
+// last, when `surface_across_gap` says a surface stands between the two. A
+// pane or a mirror returns the beam only now and then, even near its
+// normal, so one frame sees it with holes; an opening is not a surface
+// seen from elsewhere.
 std::vector<StraightSegment> straightSegments(std::span<const Eigen::Vector2d> points, const BeamMask& usable,
                                               const Eigen::Vector2d& origin, const StraightSegmentParams& params,
-                                              bool full_turn = false);
+                                              bool full_turn = false, const SurfaceAcrossGap& surface_across_gap = {});
 
 }  // namespace scanfilter

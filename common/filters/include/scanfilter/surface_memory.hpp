@@ -69,9 +69,10 @@ class SurfaceMemory {
   void forgetSeenThroughHeadOn(std::span<const Eigen::Vector2d> points, const BeamMask& returns,
                                const Eigen::Vector2d& origin);
   // Remembers the straight surfaces of one frame's usable returns (on a
-  // full turn, across the scan's seam too).
+  // full turn, across the scan's seam too; across the gaps that
+  // `surface_across_gap` vouches for, straightSegments).
   void remember(std::span<const Eigen::Vector2d> points, const BeamMask& usable, const Eigen::Vector2d& origin,
-                Stamp stamp, bool full_turn = false);
+                Stamp stamp, bool full_turn = false, const SurfaceAcrossGap& surface_across_gap = {});
   std::size_t size() const { return segments_.size(); }
 
  private:
@@ -104,7 +105,8 @@ class SurfaceMemory {
   Segment segmentBetween(const Eigen::Vector2d& a, const Eigen::Vector2d& b, Stamp last_seen, double margin_a,
                          double margin_b) const;
   std::vector<Fresh> freshSegments(std::span<const Eigen::Vector2d> points, const BeamMask& usable,
-                                   const Eigen::Vector2d& origin, Stamp stamp, bool full_turn) const;
+                                   const Eigen::Vector2d& origin, Stamp stamp, bool full_turn,
+                                   const SurfaceAcrossGap& surface_across_gap) const;
   bool seenAgain(const Segment& now, const Segment& old) const;
   // The new segment and what is remembered beyond it, on one line.
   std::vector<Segment> merged(const Fresh& now, const std::vector<Segment>& olds) const;
