@@ -40,9 +40,11 @@ struct SurfaceMemoryParams {
 // What is remembered: segments of the kept returns that the beam to their
 // middle meets at `min_beam_surface_angle_deg` or more (no grazing walls,
 // whose returns are displaced, and no trails of mixed returns, which run
-// along the beam). A surface seen again replaces what was remembered of it:
-// the newest frame puts it where it is now (drifting odometry moves old
-// segments). Over the stretch the new frame saw, the segment is as new; the
+// along the beam), across the narrow holes the frame saw through where the
+// cache holds the surface (a pane returns the beam only now and then:
+// StraightSegmentParams::max_gap). A surface seen again replaces what was
+// remembered of it: the newest frame puts it where it is now (drifting
+// odometry moves old segments). Over the stretch the new frame saw, the segment is as new; the
 // remembered stretches beyond it stay, on the new line, as old as they were,
 // except past an end the new frame saw past. A segment the sensor's path
 // crosses is forgotten: nothing solid stood there; so is one a judged frame
