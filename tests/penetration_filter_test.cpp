@@ -650,23 +650,50 @@ TEST(PenetrationGrid, AnyObstacleInARectangleAgreesWithItsCells) {
 }
 
 // The surface memory's question across a gap: is every cell between two
-// returns (not their own) an obstacle, or beside one across the line.
-TEST(PenetrationGrid, ObstaclesAlongASegmentNeedAnObstacleInEveryCellBetween) {
+// returns (not their own) an obstacle, or the cell beside it across the line.
+TEST(PenetrationGrid, HoldsASurfaceBetweenTwoPointsWhereEveryCellBetweenIsAnObstacle) {
   PenetrationGrid grid(0.05, 2);  // three points make an obstacle
   const auto obstacleAt = [&](const Eigen::Vector2d& p) {
     for (int k = 0; k < 3; ++k) grid.add(p);
   };
   for (int cell = 0; cell <= 20; ++cell) obstacleAt({0.05 * cell + 0.01, 1.02});  // the wall y = 1.02 cached
-  EXPECT_TRUE(grid.obstaclesAlong({0.1, 1.0}, {0.9, 1.0}));
-  EXPECT_TRUE(grid.obstaclesAlong({0.1, 1.06}, {0.9, 1.06})) << "one cell off the wall still finds it";
-  EXPECT_FALSE(grid.obstaclesAlong({0.1, 1.2}, {0.9, 1.2})) << "four cells off: nothing there";
-  EXPECT_FALSE(grid.obstaclesAlong({0.5, 1.0}, {1.5, 1.0})) << "past the wall's end";
+  EXPECT_TRUE(grid.holdsSurfaceBetween({0.1, 1.0}, {0.9, 1.0}));
+  EXPECT_TRUE(grid.holdsSurfaceBetween({0.1, 1.06}, {0.9, 1.06})) << "one cell off the wall still finds it";
+  EXPECT_FALSE(grid.holdsSurfaceBetween({0.1, 1.2}, {0.9, 1.2})) << "four cells off: nothing there";
+  EXPECT_FALSE(grid.holdsSurfaceBetween({0.5, 1.0}, {1.5, 1.0})) << "past the wall's end";
   grid.remove({0.51, 1.02});  // one cell of the wall no obstacle: two points
-  EXPECT_FALSE(grid.obstaclesAlong({0.1, 1.0}, {0.9, 1.0})) << "a hole of one cell";
-  EXPECT_TRUE(grid.obstaclesAlong({0.1, 1.0}, {0.45, 1.0})) << "the hole is not between these";
-  EXPECT_FALSE(grid.obstaclesAlong({0.45, 1.0}, {0.6, 1.0})) << "the ends' own cells are no evidence";
-  EXPECT_TRUE(grid.obstaclesAlong({3.0, 3.0}, {3.04, 3.0})) << "in one cell, nothing cached: nothing between to ask";
-  EXPECT_TRUE(grid.obstaclesAlong({3.04, 3.0}, {3.06, 3.0})) << "in neighbouring cells: nothing between either";
+  EXPECT_FALSE(grid.holdsSurfaceBetween({0.1, 1.0}, {0.9, 1.0})) << "a hole of one cell";
+  EXPECT_TRUE(grid.holdsSurfaceBetween({0.1, 1.0}, {0.45, 1.0})) << "the hole is not between these";
+  EXPECT_FALSE(grid.holdsSurfaceBetween({0.41, 1.0}, {0.61, 1.0})) << "cells 8 to 12 around the hole: 9-11 between";
+  EXPECT_TRUE(grid.holdsSurfaceBetween({3.0, 3.0}, {3.04, 3.0})) << "in one cell, nothing cached: nothing between to ask";
+  EXPECT_TRUE(grid.holdsSurfaceBetween({3.04, 3.0}, {3.06, 3.0})) << "in neighbouring cells: nothing between either";
+  PenetrationGrid ends_only(0.05, 2);
+  for (const double x : {0.11, 0.26})
+    for (int k = 0; k < 3; ++k) ends_only.add({x, 1.02});  // cells 2 and 5 only
+  EXPECT_FALSE(ends_only.holdsSurfaceBetween({0.11, 1.0}, {0.26, 1.0}))
+      << "the ends' own cells are no evidence, not even as cells beside those between";
+}
+
+// The same question along a diagonal wall, where the cells a line crosses
+// form a staircase: a hole of 0.2 m is found, however the cells fall.
+TEST(PenetrationGrid, ASurfaceBetweenTwoPointsOnADiagonal) {
+  const Eigen::Vector2d from(0.013, 0.0), unit = Eigen::Vector2d(1.0, 1.0).normalized();
+  const auto wallWithAHole = [&](double hole_from, double hole_to) {
+    PenetrationGrid grid(0.05, 2);
+    for (double t = 0.0; t <= 1.0; t += 0.01)
+      if (t < hole_from || t > hole_to)
+        for (int k = 0; k < 3; ++k) grid.add(from + unit * t);
+    return grid;
+  };
+  const Eigen::Vector2d a = from + unit * 0.3, b = from + unit * 0.6;
+  EXPECT_TRUE(wallWithAHole(2.0, 2.0).holdsSurfaceBetween(a, b)) << "the whole wall cached";
+  EXPECT_FALSE(wallWithAHole(0.35, 0.55).holdsSurfaceBetween(a, b)) << "0.2 m of it never seen";
+  for (const double gap : {0.08, 0.1, 0.12, 0.15}) {
+    SCOPED_TRACE(gap);
+    const Eigen::Vector2d c = from + unit * (0.3 + gap);
+    EXPECT_FALSE(wallWithAHole(0.305, 0.3 + gap - 0.005).holdsSurfaceBetween(a, c))
+        << "only the ends seen";
+  }
 }
 
 // The thin-object check's cells: those holding at least a count, obstacle

@@ -249,6 +249,54 @@ TEST(StraightSegments, OnlyANarrowHoleSeenThroughBetweenReturnsOfOneLine) {
   }
 }
 
+TEST(StraightSegments, AHoleOfBeamsWithoutAReturnAndBeamsSeenThroughIsOneHole) {
+  auto pane = paneWithAHole(5.0);
+  for (const int deg : {3, 4}) pane[static_cast<std::size_t>(deg + 30)] = kNoReturn;
+  EXPECT_EQ(segmentsAcrossGaps(pane, kSurfaceEverywhere).size(), 1u);
+}
+
+TEST(StraightSegments, ARunTooShortToGiveALineDoesNotCrossAHole) {
+  // Three returns (0 to 2 degrees, 7 cm) before a hole of 21 cm: their
+  // direction is too short a base to carry the line across.
+  const auto pane = fanOfBeams(0, 30, [](int deg) { return toLineY(deg >= 3 && deg <= 7 ? 5.0 : 2.0, deg); });
+  SCOPED_TRACE("three returns before the hole");
+  expectNoGapBridged(pane);
+}
+
+// The wall y = 2 from 0 to 60 degrees, seen through at 55 and 56: the
+// returns either side of the hole lie 0.33 m apart but only 3 degrees, well
+// inside the 5 degrees a 0.30 m gap subtends at their 3.4 m: max_gap decides.
+TEST(StraightSegments, MaxGapIsTheLongestHoleCrossed) {
+  const auto wall = fanOfBeams(0, 60, [](int deg) { return toLineY(deg == 55 || deg == 56 ? 5.0 : 2.0, deg); });
+  {
+    SCOPED_TRACE("0.33 m: longer than the default max_gap");
+    expectNoGapBridged(wall);
+  }
+  StraightSegmentParams longer;
+  longer.max_gap = 0.40;
+  EXPECT_EQ(segmentsAcrossGaps(wall, kSurfaceEverywhere, longer).size(), 1u);
+}
+
+// A full turn whose first beam points along +x at the wall x = 1.5, seen
+// from -30 to 30 degrees and through it from -2 to 2: the hole lies at the
+// scan's seam, where the walk along the beams ends and begins again.
+TEST(StraightSegments, AFullTurnCrossesAHoleAtItsSeam) {
+  std::vector<Eigen::Vector2d> turn;
+  for (int deg = 0; deg < 360; ++deg) {
+    const int off = deg < 180 ? deg : deg - 360;
+    const double a = degreesToRadians(deg);
+    const Eigen::Vector2d direction{std::cos(a), std::sin(a)};
+    const double x = std::abs(off) <= 2 ? 4.0 : 1.5;
+    turn.push_back(std::abs(off) <= 30 ? direction * (x / direction.x()) : kNoReturn);
+  }
+  const auto across = straightSegments(turn, usableReturns(turn), kOrigin, StraightSegmentParams{}, true,
+                                       kSurfaceEverywhere);
+  ASSERT_EQ(across.size(), 1u);
+  EXPECT_NEAR(std::abs(across[0].a.y() - across[0].b.y()), 3.0 * std::tan(degreesToRadians(30)), 0.01);
+  EXPECT_EQ(straightSegments(turn, usableReturns(turn), kOrigin, StraightSegmentParams{}, true).size(), 2u)
+      << "nobody to ask";
+}
+
 // A door that opened, a person who walked off: the remembered wall y = 1 is
 // seen through head-on, where a mirror or a pane would have returned the
 // beam, and is forgotten. Seen through only obliquely (ghosts behind a

@@ -170,8 +170,10 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
       memory_.forgetSeenThroughHeadOn(points_, allReturns(scan), judgement.origin);
       // A gap in a surface the frame sees through is bridged where the cache
       // (other frames) holds that surface: a pane's holes, not an opening.
-      memory_.remember(points_, keptReturns(labels), judgement.origin, scan.stamp, isFullTurn(scan),
-                       [this](const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return grid_.obstaclesAlong(a, b); });
+      const SurfaceAcrossGap cache_holds = [this](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+        return grid_.holdsSurfaceBetween(a, b);
+      };
+      memory_.remember(points_, keptReturns(labels), judgement.origin, scan.stamp, isFullTurn(scan), cache_holds);
     }
   } else {
     placeFrame(scan, sensor);

@@ -19,19 +19,21 @@ int PenetrationGrid::count(CellIndex c) const {
   return tile ? static_cast<int>(tile->counts[slot(c)]) : 0;
 }
 
-bool PenetrationGrid::obstaclesAlong(const Eigen::Vector2d& from, const Eigen::Vector2d& to) const {
+bool PenetrationGrid::holdsSurfaceBetween(const Eigen::Vector2d& from, const Eigen::Vector2d& to) const {
   const CellIndex first = cellOf(from), last = cellOf(to);
-  // Across the segment: the neighbours along the grid axis nearer its normal.
   const Eigen::Vector2d along = to - from;
-  const CellIndex across = std::abs(along.y()) > std::abs(along.x()) ? CellIndex{1, 0} : CellIndex{0, 1};
+  const Eigen::Vector2d aside = Eigen::Vector2d(-along.y(), along.x()).normalized() * cell_size_;
+  const auto isEvidence = [&](CellIndex c) { return c != first && c != last && anyObstacleIn(c, c); };
   constexpr int kSamplesPerCell = 4;  // a quarter cell apart: every cell it crosses but for a corner
   const auto samples = static_cast<int>(std::ceil(along.norm() / cell_size_ * kSamplesPerCell));
   CellIndex previous = first;
   for (int k = 1; k < samples; ++k) {
-    const CellIndex c = cellOf(from + along * (static_cast<double>(k) / samples));
+    const Eigen::Vector2d p = from + along * (static_cast<double>(k) / samples);
+    const CellIndex c = cellOf(p);
     if (c == previous || c == first || c == last) continue;
     previous = c;
-    if (!anyObstacleIn({c.x - across.x, c.y - across.y}, {c.x + across.x, c.y + across.y})) return false;
+    // The cell, or the one a cell width to either side across the segment.
+    if (!isEvidence(c) && !isEvidence(cellOf(p + aside)) && !isEvidence(cellOf(p - aside))) return false;
   }
   return true;
 }

@@ -98,7 +98,8 @@ std::vector<SurfaceMemory::Fresh> SurfaceMemory::freshSegments(std::span<const E
                                                                const SurfaceAcrossGap& surface_across_gap) const {
   const double min_sin = std::sin(degreesToRadians(params_.min_beam_surface_angle_deg));
   std::vector<Fresh> fresh;
-  for (const StraightSegment& s : straightSegments(points, usable, origin, params_.segments, full_turn, surface_across_gap)) {
+  const auto found = straightSegments(points, usable, origin, params_.segments, full_turn, surface_across_gap);
+  for (const StraightSegment& s : found) {
     const Segment segment = segmentBetween(s.a, s.b, stamp, params_.end_margin, params_.end_margin);
     const Eigen::Vector2d to_middle = ((s.a + s.b) / 2 - origin).normalized();
     // The sine of the angle at which the beam to its middle meets it.

@@ -118,12 +118,14 @@ class PenetrationGrid {
   }
 
   // Whether the cache holds a surface all the way between two points: every
-  // cell the segment from..to crosses, but the two that hold its ends (no
-  // evidence of what lies between them), is an obstacle or has one beside
-  // it across the segment (noise and pose error move a surface by a cell).
-  // True when no cell lies between the ends' cells: a gap narrower than
-  // the cache can resolve (a pane's hole of a beam or two; a crack, too).
-  bool obstaclesAlong(const Eigen::Vector2d& from, const Eigen::Vector2d& to) const;
+  // cell the segment from..to crosses, but the two that hold its ends, is an
+  // obstacle, or the cell a cell width to either side across the segment is
+  // (noise and pose error move a surface by a cell). The ends' cells are no
+  // evidence of what lies between them, neither as crossed cells nor as
+  // cells aside. True when no cell lies between the ends' cells: a gap
+  // narrower than the cache can resolve (a pane's hole of a beam or two; a
+  // crack, too).
+  bool holdsSurfaceBetween(const Eigen::Vector2d& from, const Eigen::Vector2d& to) const;
 
   // fn(count(c), centroid(c)) for every cell c of [lo, hi] (corners
   // included) holding points: one tile lookup per tile instead of one per
