@@ -234,7 +234,7 @@ void expectNoGapBridged(const std::vector<Eigen::Vector2d>& points) {
 TEST(StraightSegments, OnlyANarrowHoleSeenThroughBetweenReturnsOfOneLine) {
   ASSERT_EQ(segmentsAcrossGaps(paneWithAHole(5.0), kSurfaceEverywhere).size(), 1u);
   {
-    SCOPED_TRACE("0.39 m between the returns either side: wider than max_gap");
+    SCOPED_TRACE("0.39 m and 11 degrees between the returns either side: past the angle a 0.30 m gap subtends");
     expectNoGapBridged(paneWithAHole(5.0, 12));
   }
   {
