@@ -196,7 +196,8 @@ std::vector<StraightSegment> RunWalk::segments() {
     if (!joins && !run_.empty()) {
       if (opening_waits && opening_first_ < 0) {
         opening_run_.swap(run_);
-        opening_first_ = first_, opening_end_ = position;
+        opening_first_ = first_;
+        opening_end_ = position;
       } else {
         finishRun(position);
       }

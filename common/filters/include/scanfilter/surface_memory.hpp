@@ -44,9 +44,9 @@ struct SurfaceMemoryParams {
 // cache holds the surface (a pane returns the beam only now and then:
 // StraightSegmentParams::max_gap). A surface seen again replaces what was
 // remembered of it: the newest frame puts it where it is now (drifting
-// odometry moves old segments). Over the stretch the new frame saw, the segment is as new; the
-// remembered stretches beyond it stay, on the new line, as old as they were,
-// except past an end the new frame saw past. A segment the sensor's path
+// odometry moves old segments). Over the stretch the new frame saw, the
+// segment is as new; the remembered stretches beyond it stay, on the new
+// line, as old as they were, except past an end the new frame saw past. A segment the sensor's path
 // crosses is forgotten: nothing solid stood there; so is one a judged frame
 // sees through head-on (forgetSeenThroughHeadOn: a door that opened).
 class SurfaceMemory {
