@@ -19,7 +19,7 @@
 // within 2 or 5 times T_max, earlier, or never. That bounds what a memory of
 // surfaces longer than the cache could find (docs/accuracy.md, "Where step
 // 2 loses, and what was tried").
-//   build/bench/misdetected_error_breakdown [--seed 2] [--sensor triangulation]
+//   build/bench/misdetected_error_breakdown [--seed 2] [--sensor triangulation] [--config variant.yaml]
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -84,13 +84,14 @@ struct Counts {
   }
 };
 
-Counts breakdown(const std::string& scene_name, const std::string& sensor, std::uint64_t seed) {
+Counts breakdown(const std::string& scene_name, const std::string& sensor, std::uint64_t seed,
+                 const FilterConfig& config) {
   sim::Scene scene = sim::sceneWithSensor(scene_name, sensor);
   scene.odometry = sim::OdometryDrift{};  // true poses
   const sim::RayCaster caster(scene);
   sim::ScanSimulator simulator(scene, seed);
   const SensorInfo& info = simulator.header().sensor;
-  const TwoStepFilterParams params = FilterConfig{}.resolve(info);
+  const TwoStepFilterParams params = config.resolve(info);
   TwoStepFilter filter(params, Implementation::kFast);
   const PenetrationFilterParams& pen = params.penetration;
   Counts counts;
@@ -148,10 +149,14 @@ Counts breakdown(const std::string& scene_name, const std::string& sensor, std::
 int main(int argc, char** argv) {
   std::uint64_t seed = 2;
   std::string sensor;
+  std::string config_path;
   CLI::App app{"Why step 2 misses the misdetected returns it misses, by scene (true poses, shipped defaults)"};
   app.add_option("--seed", seed, "simulator seed of the scenes")->capture_default_str()->check(bench::kSeedCheck);
   app.add_option("--sensor", sensor, "sensor preset (tof, triangulation) or file; default: each scene's own");
+  app.add_option("--config", config_path, "filter config file (a variant); default: the shipped defaults")
+      ->check(CLI::ExistingFile);
   CLI11_PARSE(app, argc, argv);
+  const FilterConfig config = config_path.empty() ? FilterConfig{} : loadFilterConfig(config_path);
 
   std::printf("| scene | misdetected returns |");
   for (const char* name : kReasonNames) std::printf(" %s |", name);
@@ -160,7 +165,7 @@ int main(int argc, char** argv) {
   std::printf("\n");
   std::vector<std::pair<std::string, Counts>> scenes;
   for (const auto& name : sim::builtinSceneNames()) {
-    const Counts c = breakdown(name, sensor, seed);
+    const Counts c = breakdown(name, sensor, seed, config);
     std::printf("| %s | %ld |", name.c_str(), c.total());
     for (long n : c.by_reason) std::printf(" %ld (%.0f %%) |", n, c.total() > 0 ? 100.0 * n / c.total() : 0.0);
     std::printf("\n");
