@@ -368,6 +368,27 @@ TEST(SurfaceMemory, ASurfaceSeenAgainMovesToWhereTheNewFrameSeesIt) {
   EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {0.45, 2.25}, at(1.0)));  // no end margin where they join (x = 0.25)
 }
 
+// The sensor drives along a mirror and sees it piece by piece (near its
+// normal only): each frame overlaps the last one's piece but not the one
+// before. Where two remembered pieces join, neither has an end margin, however
+// many frames later: only an end a frame saw has one.
+TEST(SurfaceMemory, PiecesRememberedOneAfterAnotherJoinWithoutAnEndMargin) {
+  SurfaceMemory memory{SurfaceMemoryParams{}};
+  const auto see = [&](double from_x, double to_x, double t) {
+    std::vector<Eigen::Vector2d> piece;
+    appendLine(piece, {from_x, 1.0}, {to_x, 1.0});
+    memory.forget(kOrigin, at(t));
+    memory.remember(piece, usableReturns(piece), kOrigin, at(t));
+  };
+  see(-1.0, 0.0, 0.0);
+  see(-0.5, 0.5, 1.0);  // remembered: [-1, -0.5] and [-0.5, 0.5]
+  see(0.0, 1.0, 2.0);   // overlaps [-0.5, 0.5] only: [-0.5, 0.0] joins [-1, -0.5]
+  const double crossing_at_join = -0.45;  // within end_margin (0.10) of the join at x = -0.5
+  EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {2.0 * crossing_at_join, 2.0}, at(2.0)));
+  EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {2.0 * -0.55, 2.0}, at(2.0)));   // the other side of the join
+  EXPECT_FALSE(memory.liesBeyondASurface(kOrigin, {2.0 * -0.95, 2.0}, at(2.0)));  // the end the first frame saw
+}
+
 TEST(SurfaceMemory, AStretchNotSeenAgainExpiresWhenItsTimeIsUp) {
   SurfaceMemory memory = memoryOfAWall();  // seen at 0 s, remembered for 20 s
   std::vector<Eigen::Vector2d> middle;

@@ -130,12 +130,16 @@ std::vector<SurfaceMemory::Segment> SurfaceMemory::merged(const Fresh& fresh, co
   const double now_a = direction.dot(now.a - middle), now_b = direction.dot(now.b() - middle);
   const double seen_lo = std::min(now_a, now_b), seen_hi = std::max(now_a, now_b);
   double lo = seen_lo, hi = seen_hi;
+  // The margins of the old ends that lie beyond: an old end where it joined
+  // a stretch remembered from another time has none, and keeps none.
+  double lo_margin = params_.end_margin, hi_margin = params_.end_margin;
   Stamp remembered = olds.front().last_seen;
   for (const Segment& old : olds) {
     remembered = std::max(remembered, old.last_seen);
-    for (const Eigen::Vector2d& end : {old.a, old.b()}) {
-      lo = std::min(lo, direction.dot(end - middle));
-      hi = std::max(hi, direction.dot(end - middle));
+    for (const auto& [end, margin] : {std::pair{old.a, old.margin_a}, std::pair{old.b(), old.margin_b}}) {
+      const double u = direction.dot(end - middle);
+      if (u < lo) lo = u, lo_margin = margin;
+      if (u > hi) hi = u, hi_margin = margin;
     }
   }
   // Where the new frame saw past an end, the surface ends there now.
@@ -149,8 +153,8 @@ std::vector<SurfaceMemory::Segment> SurfaceMemory::merged(const Fresh& fresh, co
   const double end = params_.end_margin;
   std::vector<Segment> out{segmentBetween(at(seen_lo), at(seen_hi), now.last_seen, lo < seen_lo ? 0.0 : end,
                                           hi > seen_hi ? 0.0 : end)};
-  if (lo < seen_lo) out.push_back(segmentBetween(at(lo), at(seen_lo), remembered, end, 0.0));
-  if (hi > seen_hi) out.push_back(segmentBetween(at(seen_hi), at(hi), remembered, 0.0, end));
+  if (lo < seen_lo) out.push_back(segmentBetween(at(lo), at(seen_lo), remembered, lo_margin, 0.0));
+  if (hi > seen_hi) out.push_back(segmentBetween(at(seen_hi), at(hi), remembered, 0.0, hi_margin));
   return out;
 }
 
