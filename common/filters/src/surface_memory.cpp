@@ -138,8 +138,14 @@ std::vector<SurfaceMemory::Segment> SurfaceMemory::merged(const Fresh& fresh, co
     remembered = std::max(remembered, old.last_seen);
     for (const auto& [end, margin] : {std::pair{old.a, old.margin_a}, std::pair{old.b(), old.margin_b}}) {
       const double u = direction.dot(end - middle);
-      if (u < lo) lo = u, lo_margin = margin;
-      if (u > hi) hi = u, hi_margin = margin;
+      if (u < lo) {
+        lo = u;
+        lo_margin = margin;
+      }
+      if (u > hi) {
+        hi = u;
+        hi_margin = margin;
+      }
     }
   }
   // Where the new frame saw past an end, the surface ends there now.
