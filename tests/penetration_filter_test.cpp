@@ -381,6 +381,39 @@ TEST(PenetrationFilter, AStraightSurfaceIsRememberedAcrossHolesOtherFramesSawItI
   EXPECT_EQ(returnsThroughAHoleDeleted(0.30, fixed), 0) << "an opening stays open";
 }
 
+// Cached frames (0.1° beams, from the origin) put returns at `spots` (each
+// in the beam pointing nearest it); then a frame's beam passes between them,
+// through (1.5, 0.3), to the wall x = 3 behind: is that return misdetected?
+bool wallBehindSpotsMisdetected(bool require_surface_extent, const std::vector<Eigen::Vector2d>& spots) {
+  const SensorInfo sensor = test::simpleSensor();
+  PenetrationFilterParams p;
+  p.require_surface_extent = require_surface_extent;
+  BothFilters filters(p);
+  constexpr int kBeams = 3600;
+  for (int k = 0; k < 6; ++k) {
+    Scan scan = castScan(kRoom, {}, sensor, kBeams, 0.1 * k);
+    for (const auto& spot : spots)
+      scan.ranges[test::beamTowards(scan, sensor, std::atan2(spot.y(), spot.x()))] = spot.norm();
+    filters.apply(scan, sensor);
+  }
+  const Scan scan = castScan(kRoom, {}, sensor, kBeams, 0.6);
+  const auto labels = filters.apply(scan, sensor);
+  return labels[test::beamTowards(scan, sensor, std::atan2(0.3, 1.5))] == kMisdetected;
+}
+
+// A thin leg's cached returns, spread by noise and mixing, make a compact
+// blob of cells; a beam passing through its middle has cells on both sides,
+// a few cm apart, as a beam through a wall has. Only a wall goes on past
+// them: the blob is no surface the beam crossed.
+TEST(PenetrationFilter, ABeamThroughTheBlobOfALegsCellsCrossesNoSurface) {
+  const std::vector<Eigen::Vector2d> blob = {{1.48, 0.28}, {1.48, 0.32}, {1.52, 0.28}, {1.52, 0.32}};
+  EXPECT_TRUE(wallBehindSpotsMisdetected(false, blob)) << "without the extent test the blob is a wall";
+  EXPECT_FALSE(wallBehindSpotsMisdetected(true, blob));
+  std::vector<Eigen::Vector2d> wall;  // a short wall across the beam, 0.2 m long
+  for (int k = 0; k <= 20; ++k) wall.emplace_back(1.5, 0.2 + 0.01 * k);
+  EXPECT_TRUE(wallBehindSpotsMisdetected(true, wall)) << "a surface goes on past the two cells";
+}
+
 TEST(PenetrationFilter, PoseJumpResetsTheCache) {
   const SensorInfo sensor = test::simpleSensor();
   BothFilters filters(PenetrationFilterParams{});

@@ -141,6 +141,7 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.read("require_both_sides", p.require_both_sides);
   s.read("straddle_half_width", p.straddle_half_width);
   s.read("surface_gap", p.surface_gap);
+  s.read("require_surface_extent", p.require_surface_extent);
   s.read("own_surface_margin", p.own_surface_margin);
   s.read("own_surface_margin_per_m", p.own_surface_margin_per_m);
   s.read("grazing_margin", p.grazing_margin);

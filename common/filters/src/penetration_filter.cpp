@@ -36,7 +36,7 @@ BeamMask allReturns(const Scan& scan) {
 PenetrationFilter::PenetrationFilter(const PenetrationFilterParams& params)
     : params_(params),
       rule_(params),
-      evidence_along_beam_(rule_, params.surface_gap),
+      evidence_along_beam_(rule_, params.surface_gap, surfaceGoesOnTest(params)),
       grid_(params.cell_size, params.obstacle_threshold),
       evidence_(params.cell_size),  // the same cells as grid_: a frame's runs go into both
       aligner_(params.alignment),
@@ -278,6 +278,34 @@ double PenetrationFilter::ownMarginSq(const Eigen::Vector2d& origin, std::size_t
   if (params_.grazing_margin)
     margin = std::max(margin, std::min(grazingRun(origin, i), params_.grazing_margin_max));
   return margin * margin;
+}
+
+PenetrationEvidence::SurfaceGoesOn PenetrationFilter::surfaceGoesOnTest(const PenetrationFilterParams& params) {
+  if (!params.require_surface_extent) return {};
+  return [this](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return obstaclePastAlongLine(a, b) || obstaclePastAlongLine(b, a);
+  };
+}
+
+bool PenetrationFilter::obstaclePastAlongLine(const Eigen::Vector2d& from, const Eigen::Vector2d& to) const {
+  // The next cell of a surface along the line from `from` through `to`: its
+  // obstacle position (a centroid anywhere in its cell) half a cell to a
+  // cell and a half past `to`, within half a cell of the line. Such a
+  // position lies within the cells around the point a cell past `to`.
+  constexpr double kNearestCells = 0.5, kFarthestCells = 1.5, kOffLineCells = 0.5;
+  const double cell = grid_.cellSize();
+  const Eigen::Vector2d along_line = (to - from).normalized();
+  const CellIndex next = grid_.cellOf(to + along_line * cell);
+  bool found = false;
+  grid_.forEachObstacleIn({next.x - 1, next.y - 1}, {next.x + 1, next.y + 1}, [&](CellIndex c) {
+    if (found) return;
+    const Eigen::Vector2d q = obstaclePosition(c);
+    const Eigen::Vector2d w = q - to;
+    const double past = w.dot(along_line);
+    found = countsAsObstacle(q) && past >= kNearestCells * cell && past <= kFarthestCells * cell &&
+            std::abs(cross(along_line, w)) <= kOffLineCells * cell;
+  });
+  return found;
 }
 
 double PenetrationFilter::grazingRun(const Eigen::Vector2d& origin, std::size_t i) const {

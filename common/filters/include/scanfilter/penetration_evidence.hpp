@@ -1,4 +1,6 @@
 #pragma once
+#include <functional>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -19,8 +21,12 @@ namespace scanfilter {
 // cells come in, so both implementations agree.
 class PenetrationEvidence {
  public:
-  PenetrationEvidence(const PenetrationRule& rule, double surface_gap)
-      : rule_(rule), gap_sq_(surface_gap * surface_gap) {}
+  // Whether the obstacles at a and b, neighbours across a beam, are part of
+  // a surface that goes on past them (empty: any two are).
+  using SurfaceGoesOn = std::function<bool(const Eigen::Vector2d& a, const Eigen::Vector2d& b)>;
+
+  PenetrationEvidence(const PenetrationRule& rule, double surface_gap, SurfaceGoesOn goes_on = {})
+      : rule_(rule), gap_sq_(surface_gap * surface_gap), goes_on_(std::move(goes_on)) {}
 
   void reset() {
     left_.clear();
@@ -33,7 +39,7 @@ class PenetrationEvidence {
     if (!rule_.requiresBothSides()) return (bits & PenetrationRule::kOnBeam) != 0;
     const bool left = (bits & PenetrationRule::kLeft) != 0;
     for (const auto& other : left ? right_ : left_)
-      if ((other - q).squaredNorm() <= gap_sq_) return true;
+      if ((other - q).squaredNorm() <= gap_sq_ && (!goes_on_ || goes_on_(other, q))) return true;
     (left ? left_ : right_).push_back(q);
     return false;
   }
@@ -41,6 +47,7 @@ class PenetrationEvidence {
  private:
   const PenetrationRule& rule_;
   double gap_sq_;
+  SurfaceGoesOn goes_on_;
   std::vector<Eigen::Vector2d> left_;
   std::vector<Eigen::Vector2d> right_;
 };

@@ -84,6 +84,11 @@ class PenetrationFilter {
   // How far back from point i its beam stays within straddle_half_width of
   // the surface through i's neighbours (0 when they do not make one line).
   double grazingRun(const Eigen::Vector2d& origin, std::size_t i) const;
+  // require_surface_extent's test of two obstacles across a beam (empty when
+  // off): whether an obstacle that counts lies about a cell past either,
+  // along the line through both.
+  PenetrationEvidence::SurfaceGoesOn surfaceGoesOnTest(const PenetrationFilterParams& params);
+  bool obstaclePastAlongLine(const Eigen::Vector2d& from, const Eigen::Vector2d& to) const;
 
   // The position q of an obstacle cell used by the rule: centre or centroid.
   Eigen::Vector2d obstaclePosition(CellIndex c) const {

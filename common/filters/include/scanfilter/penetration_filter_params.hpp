@@ -27,6 +27,12 @@ struct PenetrationFilterParams {
   bool require_both_sides = true;
   double straddle_half_width = 0.075;  // m
   double surface_gap = 0.06;          // m
+  // Beyond the paper: with require_both_sides, the two cells count only when
+  // an obstacle goes on past one of them along the line through both (about
+  // a cell farther): a surface, not the compact blob a thin leg's cached
+  // returns make, which range noise, mixing and the footprint spread across
+  // the beams that pass within a few centimetres of the leg.
+  bool require_surface_extent = true;
   double own_surface_margin = 0.25;    // m, cells nearer the point are its own surface
   double own_surface_margin_per_m = 0.02;  // m per m of range added to that margin
   // Beyond the paper: a beam meeting its surface at a grazing angle g runs
