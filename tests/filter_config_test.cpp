@@ -32,6 +32,7 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(s.penetration.require_both_sides, d.penetration.require_both_sides);
   EXPECT_EQ(s.penetration.straddle_half_width, d.penetration.straddle_half_width);
   EXPECT_EQ(s.penetration.surface_gap, d.penetration.surface_gap);
+  EXPECT_EQ(s.penetration.require_surface_extent, d.penetration.require_surface_extent);
   EXPECT_EQ(s.penetration.behind_margin, d.penetration.behind_margin);
   EXPECT_EQ(s.penetration.pose_jump_reset, d.penetration.pose_jump_reset);
   EXPECT_EQ(s.penetration.max_cache_frames, d.penetration.max_cache_frames);
@@ -95,6 +96,7 @@ TEST(FilterConfig, PaperLiteralPresetLoads) {
   EXPECT_FALSE(paper.params.penetration.rescue_persistent_points);
   EXPECT_FALSE(paper.params.penetration.free_space_check);
   EXPECT_FALSE(paper.params.penetration.thin_object_check);
+  EXPECT_FALSE(paper.params.penetration.require_surface_extent);
   EXPECT_EQ(paper.params.penetration.surface_memory.lifetime, 0.0) << "no memory beyond T_max";
   EXPECT_FALSE(paper.params.jump.noise_estimate) << "the paper has no noise model";
   EXPECT_FALSE(paper.params.jump.keep_foreground_clusters) << "eq. 7 as printed deletes every lone return";
@@ -178,6 +180,11 @@ TEST(FilterConfigErrors, NameFileLineAndKey) {
             "f.yaml:2: penetration_filter.thin_object_max_beams: expected an integer >= 1");
   EXPECT_EQ(errorOf("penetration_filter:\n  thin_object_radius: 2\n"),
             "f.yaml:2: penetration_filter.thin_object_radius: expected 0 <= value <= 1 (m)");
+  EXPECT_EQ(errorOf("penetration_filter:\n  obstacle_at_centroid: false\n"),
+            "f.yaml:2: penetration_filter.require_surface_extent: needs obstacle_at_centroid: true (or set "
+            "require_surface_extent: false for cell centres)");
+  EXPECT_EQ(errorOf("penetration_filter:\n  obstacle_at_centroid: false\n  require_surface_extent: false\n"), "no error");
+  EXPECT_EQ(errorOf("penetration_filter:\n  obstacle_at_centroid: false\n  require_both_sides: false\n"), "no error");
   EXPECT_EQ(errorOf("penetration_filter:\n  edge_depth_step: 0\n"),
             "f.yaml:2: penetration_filter.edge_depth_step: must be > 0 with thin_object_check (or set "
             "thin_object_check: false)");

@@ -410,7 +410,7 @@ TEST(PenetrationFilter, ABeamThroughTheBlobOfALegsCellsCrossesNoSurface) {
   EXPECT_TRUE(wallBehindSpotsMisdetected(false, blob)) << "without the extent test the blob is a wall";
   EXPECT_FALSE(wallBehindSpotsMisdetected(true, blob));
   std::vector<Eigen::Vector2d> wall;  // a short wall across the beam, 0.2 m long
-  for (int k = 0; k <= 20; ++k) wall.emplace_back(1.5, 0.2 + 0.01 * k);
+  for (int k = 0; k <= 20; ++k) wall.emplace_back(1.51, 0.2 + 0.01 * k);  // inside one column of cells
   EXPECT_TRUE(wallBehindSpotsMisdetected(true, wall)) << "a surface goes on past the two cells";
 }
 

@@ -368,25 +368,50 @@ TEST(SurfaceMemory, ASurfaceSeenAgainMovesToWhereTheNewFrameSeesIt) {
   EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {0.45, 2.25}, at(1.0)));  // no end margin where they join (x = 0.25)
 }
 
+// The wall y = 1 seen piece by piece from the origin, each piece from
+// `from_x` to `to_x` in beam order (reversed: scanned the other way).
+struct Piece {
+  double from_x, to_x, t;
+};
+void seePieces(SurfaceMemory& memory, const std::vector<Piece>& pieces) {
+  for (const Piece& piece : pieces) {
+    std::vector<Eigen::Vector2d> points;
+    appendLine(points, {piece.from_x, 1.0}, {piece.to_x, 1.0});
+    memory.forget(kOrigin, at(piece.t));
+    memory.remember(points, usableReturns(points), kOrigin, at(piece.t));
+  }
+}
+
 // The sensor drives along a mirror and sees it piece by piece (near its
 // normal only): each frame overlaps the last one's piece but not the one
 // before. Where two remembered pieces join, neither has an end margin, however
-// many frames later: only an end a frame saw has one.
+// many frames later, whichever way each piece was scanned: only an end a
+// frame saw has one.
 TEST(SurfaceMemory, PiecesRememberedOneAfterAnotherJoinWithoutAnEndMargin) {
+  for (const bool reversed : {false, true}) {
+    SurfaceMemory memory{SurfaceMemoryParams{}};
+    // Remembered after the second piece: [-1, -0.5] and [-0.5, 0.5]; the
+    // third overlaps [-0.5, 0.5] only, so [-0.5, 0.0] joins [-1, -0.5].
+    if (reversed) seePieces(memory, {{-1.0, 0.0, 0.0}, {0.5, -0.5, 1.0}, {0.0, 1.0, 2.0}});
+    else seePieces(memory, {{-1.0, 0.0, 0.0}, {-0.5, 0.5, 1.0}, {0.0, 1.0, 2.0}});
+    const double crossing_at_join = -0.45;  // within end_margin (0.10) of the join at x = -0.5
+    EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {2.0 * crossing_at_join, 2.0}, at(2.0))) << reversed;
+    EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {2.0 * -0.55, 2.0}, at(2.0))) << reversed;  // the other side
+    EXPECT_FALSE(memory.liesBeyondASurface(kOrigin, {2.0 * -0.95, 2.0}, at(2.0))) << reversed;  // a seen end
+  }
+}
+
+// A piece gone (here driven through: a door that opened) leaves the piece
+// it joined with an end there again, margin and all.
+TEST(SurfaceMemory, AJoinWhosePartnerIsGoneIsAnEndAgain) {
   SurfaceMemory memory{SurfaceMemoryParams{}};
-  const auto see = [&](double from_x, double to_x, double t) {
-    std::vector<Eigen::Vector2d> piece;
-    appendLine(piece, {from_x, 1.0}, {to_x, 1.0});
-    memory.forget(kOrigin, at(t));
-    memory.remember(piece, usableReturns(piece), kOrigin, at(t));
-  };
-  see(-1.0, 0.0, 0.0);
-  see(-0.5, 0.5, 1.0);  // remembered: [-1, -0.5] and [-0.5, 0.5]
-  see(0.0, 1.0, 2.0);   // overlaps [-0.5, 0.5] only: [-0.5, 0.0] joins [-1, -0.5]
-  const double crossing_at_join = -0.45;  // within end_margin (0.10) of the join at x = -0.5
-  EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {2.0 * crossing_at_join, 2.0}, at(2.0)));
-  EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {2.0 * -0.55, 2.0}, at(2.0)));   // the other side of the join
-  EXPECT_FALSE(memory.liesBeyondASurface(kOrigin, {2.0 * -0.95, 2.0}, at(2.0)));  // the end the first frame saw
+  seePieces(memory, {{-1.0, 0.0, 0.0}, {-0.5, 0.5, 1.0}});  // [-1, -0.5] joins [-0.5, 0.5]
+  EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {2.0 * -0.45, 2.0}, at(1.0)));
+  memory.forget({-1.5, 2.0}, at(1.5));  // through [-1, -0.5], at x = -0.75
+  memory.forget(kOrigin, at(2.0));      // and back
+  EXPECT_FALSE(memory.liesBeyondASurface(kOrigin, {2.0 * -0.75, 2.0}, at(2.0))) << "the door is open";
+  EXPECT_FALSE(memory.liesBeyondASurface(kOrigin, {2.0 * -0.45, 2.0}, at(2.0))) << "beside the jamb: the end margin";
+  EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {2.0 * -0.35, 2.0}, at(2.0)));
 }
 
 TEST(SurfaceMemory, AStretchNotSeenAgainExpiresWhenItsTimeIsUp) {

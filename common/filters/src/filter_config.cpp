@@ -205,6 +205,12 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   // With no depth step every local minimum would stand in front, and a return's own cell in front of it.
   if (p.thin_object_check && !(p.edge_depth_step > 0.0))
     s.fail("edge_depth_step", "must be > 0 with thin_object_check (or set thin_object_check: false)");
+  // Cell centres of a slanted wall one cell thick form a staircase: the next
+  // centre past two neighbours across a beam is never on their line, so every
+  // crossing of such a wall would be refused.
+  if (p.require_both_sides && p.require_surface_extent && !p.obstacle_at_centroid)
+    s.fail("require_surface_extent",
+           "needs obstacle_at_centroid: true (or set require_surface_extent: false for cell centres)");
   s.rejectUnknownKeys();
 }
 

@@ -21,15 +21,44 @@ void SurfaceMemory::clear() {
 }
 
 void SurfaceMemory::forget(const Eigen::Vector2d& origin, Stamp now) {
-  std::erase_if(segments_, [&](const Segment& s) { return now.secondsSince(s.last_seen) > params_.lifetime; });
+  drop([&](const Segment& s) { return now.secondsSince(s.last_seen) > params_.lifetime; });
   if (last_origin_) {
     const Eigen::Vector2d from = *last_origin_;
-    std::erase_if(segments_, [&](const Segment& s) {
+    drop([&](const Segment& s) {
       const std::optional<double> along = s.crossingAlong(from, origin);
       return along && *along >= 0.0 && *along <= s.length;
     });
   }
   last_origin_ = origin;
+}
+
+void SurfaceMemory::drop(const std::function<bool(const Segment&)>& gone) {
+  std::vector<Segment> dropped;
+  std::erase_if(segments_, [&](const Segment& s) {
+    if (!gone(s)) return false;
+    dropped.push_back(s);
+    return true;
+  });
+  endWhereJoinsWent(dropped);
+}
+
+void SurfaceMemory::endWhereJoinsWent(const std::vector<Segment>& dropped) {
+  // A piece's end without a margin joined another piece; with that piece
+  // gone it is an end again. The pieces of one merge meet exactly, and a
+  // later merge moves a piece onto the new line by at most merge_offset, so
+  // an end that near a dropped piece's end gets its margin back (where it
+  // also joins a piece that stays, that costs the margin's blind stretch).
+  if (dropped.empty()) return;
+  const double near_sq = params_.merge_offset * params_.merge_offset;
+  const auto joinedDropped = [&](const Eigen::Vector2d& end) {
+    return std::any_of(dropped.begin(), dropped.end(), [&](const Segment& d) {
+      return (d.a - end).squaredNorm() <= near_sq || (d.b() - end).squaredNorm() <= near_sq;
+    });
+  };
+  for (Segment& s : segments_) {
+    if (s.margin_a == 0.0 && joinedDropped(s.a)) s.margin_a = params_.end_margin;
+    if (s.margin_b == 0.0 && joinedDropped(s.b())) s.margin_b = params_.end_margin;
+  }
 }
 
 bool SurfaceMemory::beamPassesThrough(const Segment& s, const Eigen::Vector2d& origin, const Eigen::Vector2d& p,
@@ -82,7 +111,7 @@ bool SurfaceMemory::seenThroughHeadOn(const Segment& s, std::span<const Eigen::V
 void SurfaceMemory::forgetSeenThroughHeadOn(std::span<const Eigen::Vector2d> points, const BeamMask& returns,
                                             const Eigen::Vector2d& origin) {
   if (params_.head_on_through_beams <= 0) return;
-  std::erase_if(segments_, [&](const Segment& s) { return seenThroughHeadOn(s, points, returns, origin); });
+  drop([&](const Segment& s) { return seenThroughHeadOn(s, points, returns, origin); });
 }
 
 SurfaceMemory::Segment SurfaceMemory::segmentBetween(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
@@ -197,7 +226,10 @@ void SurfaceMemory::keepWithinBound() {
   // The most recently seen first; the rest go.
   std::stable_sort(segments_.begin(), segments_.end(),
                    [](const Segment& x, const Segment& y) { return y.last_seen < x.last_seen; });
+  const std::vector<Segment> dropped(segments_.begin() + static_cast<std::ptrdiff_t>(params_.max_segments),
+                                     segments_.end());
   segments_.resize(params_.max_segments);
+  endWhereJoinsWent(dropped);
 }
 
 }  // namespace scanfilter

@@ -37,6 +37,10 @@ class PenetrationFilter {
  public:
   explicit PenetrationFilter(const PenetrationFilterParams& params);
   virtual ~PenetrationFilter() = default;
+  // Its parts hold references to it (the rule, the evidence's test of a
+  // surface's extent): a copy would judge with the original's.
+  PenetrationFilter(const PenetrationFilter&) = delete;
+  PenetrationFilter& operator=(const PenetrationFilter&) = delete;
 
   // `labels` holds step 1's codes; valid points found misdetected become
   // kMisdetected. Frames must come in stamp order.

@@ -1,5 +1,6 @@
 #pragma once
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -118,6 +119,10 @@ class SurfaceMemory {
   bool seenThroughHeadOn(const Segment& s, std::span<const Eigen::Vector2d> points, const BeamMask& returns,
                          const Eigen::Vector2d& origin) const;
   void keepWithinBound();
+  // Erases the segments `gone` says, then endWhereJoinsWent.
+  void drop(const std::function<bool(const Segment&)>& gone);
+  // Gives back the end margin where a piece joined one of `dropped`.
+  void endWhereJoinsWent(const std::vector<Segment>& dropped);
 
   SurfaceMemoryParams params_;
   std::vector<Segment> segments_;
