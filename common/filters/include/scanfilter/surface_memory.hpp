@@ -88,7 +88,7 @@ class SurfaceMemory {
     Stamp last_seen;
     // How far inside each end (a, then the other) a beam must cross it:
     // end_margin at an end a frame saw, 0 where it joins a stretch seen at
-    // another time.
+    // another time (end_margin again once that stretch is dropped).
     double margin_a = 0.0;
     double margin_b = 0.0;
 
