@@ -675,10 +675,16 @@ TEST(PenetrationGrid, AnyObstacleInARectangleAgreesWithItsCells) {
   for (int trial = 0; trial < 2000; ++trial) {
     const CellIndex lo{corner(rng), corner(rng)};
     const CellIndex hi{lo.x + side(rng), lo.y + side(rng)};
-    bool expected = false;
+    // With a predicate: only obstacle cells in an even column count.
+    const auto even_column = [](CellIndex c) { return c.x % 2 == 0; };
+    bool expected = false, expected_even = false;
     for (std::int32_t y = lo.y; y <= hi.y; ++y)
-      for (std::int32_t x = lo.x; x <= hi.x; ++x) expected = expected || grid.count({x, y}) > 2;
+      for (std::int32_t x = lo.x; x <= hi.x; ++x) {
+        expected = expected || grid.count({x, y}) > 2;
+        expected_even = expected_even || (grid.count({x, y}) > 2 && even_column({x, y}));
+      }
     ASSERT_EQ(grid.anyObstacleIn(lo, hi), expected) << "trial " << trial;
+    ASSERT_EQ(grid.anyObstacleIn(lo, hi, even_column), expected_even) << "trial " << trial;
   }
 }
 

@@ -296,16 +296,13 @@ bool PenetrationFilter::obstaclePastAlongLine(const Eigen::Vector2d& from, const
   const double cell = grid_.cellSize();
   const Eigen::Vector2d along_line = (to - from).normalized();
   const CellIndex next = grid_.cellOf(to + along_line * cell);
-  bool found = false;
-  grid_.forEachObstacleIn({next.x - 1, next.y - 1}, {next.x + 1, next.y + 1}, [&](CellIndex c) {
-    if (found) return;
+  return grid_.anyObstacleIn({next.x - 1, next.y - 1}, {next.x + 1, next.y + 1}, [&](CellIndex c) {
     const Eigen::Vector2d q = obstaclePosition(c);
     const Eigen::Vector2d w = q - to;
     const double past = w.dot(along_line);
-    found = countsAsObstacle(q) && past >= kNearestCells * cell && past <= kFarthestCells * cell &&
-            std::abs(cross(along_line, w)) <= kOffLineCells * cell;
+    return countsAsObstacle(q) && past >= kNearestCells * cell && past <= kFarthestCells * cell &&
+           std::abs(cross(along_line, w)) <= kOffLineCells * cell;
   });
-  return found;
 }
 
 double PenetrationFilter::grazingRun(const Eigen::Vector2d& origin, std::size_t i) const {

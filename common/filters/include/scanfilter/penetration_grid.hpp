@@ -112,9 +112,13 @@ class PenetrationGrid {
 
   // Whether any cell in lo..hi (inclusive) is an obstacle.
   bool anyObstacleIn(CellIndex lo, CellIndex hi) const {
-    return anySlotIn(lo, hi, [](const Tile& tile, std::size_t slot) {
-      return ((tile.obstacles[slot / 64] >> (slot % 64)) & 1U) != 0;
-    });
+    return anySlotIn(lo, hi, [](const Tile& tile, std::size_t slot) { return isObstacle(tile, slot); });
+  }
+  // Whether pred(cell) holds for an obstacle cell in lo..hi (inclusive);
+  // stops at the first.
+  template <typename Pred>
+  bool anyObstacleIn(CellIndex lo, CellIndex hi, Pred&& pred) const {
+    return anyCellIn(lo, hi, [&](const Tile& tile, CellIndex c) { return isObstacle(tile, slot(c)) && pred(c); });
   }
 
   // Whether the cache holds a surface all the way between two points: every
@@ -155,6 +159,9 @@ class PenetrationGrid {
     return static_cast<std::size_t>((c.y & (kTileSide - 1)) * kTileSide + (c.x & (kTileSide - 1)));
   }
   const Tile* findTile(std::uint64_t key) const;
+  static bool isObstacle(const Tile& tile, std::size_t slot) {
+    return ((tile.obstacles[slot / 64] >> (slot % 64)) & 1U) != 0;
+  }
   // stop(tile, its first cell) for every tile that exists within lo..hi,
   // until it returns true; whether it did.
   template <typename Stop>

@@ -47,9 +47,10 @@ struct SurfaceMemoryParams {
 // remembered of it: the newest frame puts it where it is now (drifting
 // odometry moves old segments). Over the stretch the new frame saw, the
 // segment is as new; the remembered stretches beyond it stay, on the new
-// line, as old as they were, except past an end the new frame saw past. A segment the sensor's path
-// crosses is forgotten: nothing solid stood there; so is one a judged frame
-// sees through head-on (forgetSeenThroughHeadOn: a door that opened).
+// line, as old as they were, except past an end the new frame saw past. A
+// segment the sensor's path crosses is forgotten: nothing solid stood
+// there; so is one a judged frame sees through head-on
+// (forgetSeenThroughHeadOn: a door that opened).
 class SurfaceMemory {
  public:
   explicit SurfaceMemory(const SurfaceMemoryParams& params) : params_(params) {}
