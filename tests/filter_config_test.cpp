@@ -83,10 +83,23 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(sm.segments.min_length, dm.segments.min_length);
   EXPECT_EQ(sm.segments.end_step, dm.segments.end_step);
   EXPECT_EQ(sm.segments.max_gap, dm.segments.max_gap);
+  const SparseSurfaceParams& ss = sm.sparse_surfaces;
+  const SparseSurfaceParams& ds = dm.sparse_surfaces;
+  EXPECT_EQ(ss.enabled, ds.enabled);
+  EXPECT_EQ(ss.min_beam_surface_angle_deg, ds.min_beam_surface_angle_deg);
+  EXPECT_EQ(ss.neighbour_radius, ds.neighbour_radius);
+  EXPECT_EQ(ss.min_neighbours, ds.min_neighbours);
+  EXPECT_EQ(ss.max_thickness, ds.max_thickness);
+  EXPECT_EQ(ss.max_angle_deg, ds.max_angle_deg);
+  EXPECT_EQ(ss.max_gap, ds.max_gap);
+  EXPECT_EQ(ss.max_deviation, ds.max_deviation);
+  EXPECT_EQ(ss.min_cells, ds.min_cells);
+  EXPECT_EQ(ss.min_length, ds.min_length);
   EXPECT_FALSE(shipped.angular_accuracy_deg) << "auto: from the sensor";
   const FilterConfig built_in;
   EXPECT_EQ(shipped.obstacle_threshold_reference_deg, built_in.obstacle_threshold_reference_deg);
   EXPECT_EQ(shipped.free_space_veto_reference_deg, built_in.free_space_veto_reference_deg);
+  EXPECT_EQ(shipped.sparse_support_reference_deg, built_in.sparse_support_reference_deg);
 }
 
 TEST(FilterConfig, PaperLiteralPresetLoads) {
@@ -135,12 +148,21 @@ TEST(FilterConfig, CountsOfReturnsFollowTheAngularStep) {
   EXPECT_EQ(quarter.rescue_min_count, 5);
   EXPECT_EQ(at(shipped, 0.3515625).free_space_veto_count, 6);  // URG-04LX: 1,024 steps a turn
   EXPECT_EQ(at(shipped, 5.0).free_space_veto_count, 1) << "0.4 rounds to 0, and a veto of 0 would need no evidence";
+  // The sparse surfaces' support grows with the square root of the beams.
+  EXPECT_EQ(one_degree.surface_memory.sparse_surfaces.min_neighbours, 4);
+  EXPECT_EQ(one_degree.surface_memory.sparse_surfaces.min_cells, 6);
+  EXPECT_EQ(quarter.surface_memory.sparse_surfaces.min_neighbours, 8);
+  EXPECT_EQ(quarter.surface_memory.sparse_surfaces.min_cells, 12);
+  EXPECT_EQ(at(shipped, 5.0).surface_memory.sparse_surfaces.min_neighbours, 3) << "a line needs three cells";
 
   const FilterConfig as_given = parseFilterConfig(
-      "penetration_filter:\n  obstacle_threshold_reference_deg: 0\n  free_space_veto_reference_deg: 0\n", "f.yaml");
+      "penetration_filter:\n  obstacle_threshold_reference_deg: 0\n  free_space_veto_reference_deg: 0\n"
+      "  surface_memory:\n    sparse_surfaces:\n      support_reference_deg: 0\n",
+      "f.yaml");
   const PenetrationFilterParams fixed = at(as_given, 0.25);
   EXPECT_EQ(fixed.obstacle_threshold, 2);
   EXPECT_EQ(fixed.free_space_veto_count, 2);
+  EXPECT_EQ(fixed.surface_memory.sparse_surfaces.min_cells, 6);
 }
 
 TEST(FilterConfigErrors, NameFileLineAndKey) {
@@ -171,6 +193,13 @@ TEST(FilterConfigErrors, NameFileLineAndKey) {
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    max_gap: -0.1\n"),
             "f.yaml:3: penetration_filter.surface_memory.max_gap: expected 0 <= value <= 10 (m; 0: off)");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    max_gap: 0\n"), "no error");
+  EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    sparse_surfaces:\n      min_neighbours: 2\n"),
+            "f.yaml:4: penetration_filter.surface_memory.sparse_surfaces.min_neighbours: expected an integer >= 3 (a "
+            "cell and two more make a line)");
+  EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    sparse_surfaces:\n      max_gap: 0\n"),
+            "f.yaml:4: penetration_filter.surface_memory.sparse_surfaces.max_gap: expected 0.001 <= value <= 10 (m)");
+  EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    sparse_surfaces:\n      min_cels: 6\n"),
+            "f.yaml:4: penetration_filter.surface_memory.sparse_surfaces.min_cels: unknown key");
   EXPECT_EQ(errorOf("penetration_filter:\n  free_space_veto_reference_deg: -1\n"),
             "f.yaml:2: penetration_filter.free_space_veto_reference_deg: expected 0 (as given) or the angular step "
             "free_space_veto_count is for, in degrees");

@@ -381,6 +381,86 @@ TEST(PenetrationFilter, AStraightSurfaceIsRememberedAcrossHolesOtherFramesSawItI
   EXPECT_EQ(returnsThroughAHoleDeleted(0.30, fixed), 0) << "an opening stays open";
 }
 
+// A pane 1.5 m ahead (x = 1.5, |y| <= 0.6) returns a beam only now and then:
+// in frame k only the beams i with i % 40 == 2k % 40 end on it (one or two),
+// the others go through to the room's wall behind; over the 20 frames about
+// one return falls in each of its cells. Then a frame from elsewhere: how
+// many of its returns beyond the pane are deleted.
+std::ptrdiff_t returnsBeyondAPaneSeenAReturnAtATimeDeleted(bool sparse_surfaces) {
+  const SensorInfo sensor = test::simpleSensor();
+  PenetrationFilterParams p;
+  p.surface_memory.sparse_surfaces.enabled = sparse_surfaces;
+  // Other frames saw through every return on the pane: the free-space check
+  // would take most of them for jump points, and they would not be cached.
+  p.free_space_check = false;
+  BothFilters filters(p);
+  const World pane = World{kRoom}.wall({1.5, -0.6}, {1.5, 0.6});
+  for (int k = 0; k < 20; ++k) {
+    const Pose2 pose{0.02 * k, 0.0, 0.0};
+    Scan scan = castScan(kRoom, pose, sensor, 360, 0.1 * k);
+    const Scan on_pane = castScan(pane, pose, sensor, 360, 0.1 * k);
+    for (std::size_t i = 0; i < scan.size(); ++i)
+      if (on_pane.ranges[i] < scan.ranges[i] - 0.5 && i % 40 == (2 * static_cast<std::size_t>(k)) % 40)
+        scan.ranges[i] = on_pane.ranges[i];
+    filters.apply(scan, sensor);
+  }
+  const Scan scan = castScan(kRoom, {0.5, 0.2, 0.0}, sensor, 360, 2.0);
+  const auto labels = filters.apply(scan, sensor);
+  return std::count(labels.begin(), labels.end(), kMisdetected);
+}
+
+// The pane's cells hold one or two returns each, too few for obs_th: step 2
+// and the straight runs of single frames see no surface there. Over the
+// cache's frames those returns line up, and the line is a surface.
+TEST(PenetrationFilter, APaneSeenAReturnAtATimeIsASurface) {
+  EXPECT_GT(returnsBeyondAPaneSeenAReturnAtATimeDeleted(true), 40) << "the returns through the pane";
+  EXPECT_EQ(returnsBeyondAPaneSeenAReturnAtATimeDeleted(false), 0) << "no surface without sparse surfaces";
+}
+
+// A pane at x = 1.5 returns one beam in five (a different one each frame)
+// and the beam after next comes back from x = 2.5 (a reflection, or what
+// lies behind the pane), the rest reach the room's wall. Both lines of
+// returns are cached in the warm-up, before anything is judged. Then a frame
+// from (2, 1.2): how many of its returns on the wall x = 3, beyond the line
+// x = 2.5 and not beyond the pane, are deleted?
+std::ptrdiff_t returnsBeyondALineSeenBeyondAPaneDeleted() {
+  const SensorInfo sensor = test::simpleSensor();
+  PenetrationFilterParams p;
+  p.free_space_check = false;  // other frames saw through every one of those returns
+  p.pose_jump_reset = 10.0;     // the last frame is taken from elsewhere
+  BothFilters filters(p);
+  const World pane = World{kRoom}.wall({1.5, -0.6}, {1.5, 0.6});
+  const World behind = World{kRoom}.wall({2.5, -1.2}, {2.5, 1.2});
+  for (int k = 0; k < 10; ++k) {
+    const Pose2 pose{0.02 * k, 0.0, 0.0};
+    Scan scan = castScan(kRoom, pose, sensor, 360, 0.1 * k);
+    const Scan on_pane = castScan(pane, pose, sensor, 360, 0.1 * k);
+    const Scan on_line = castScan(behind, pose, sensor, 360, 0.1 * k);
+    for (std::size_t i = 0; i < scan.size(); ++i) {
+      if (!(on_pane.ranges[i] < scan.ranges[i] - 0.5)) continue;  // beams that cross the pane
+      const std::size_t phase = (i + static_cast<std::size_t>(k)) % 5;
+      if (phase == 0) scan.ranges[i] = on_pane.ranges[i];
+      if (phase == 2) scan.ranges[i] = on_line.ranges[i];
+    }
+    filters.apply(scan, sensor);
+  }
+  const Scan scan = castScan(kRoom, {2.0, 1.2, 0.0}, sensor, 360, 1.0);
+  const auto labels = filters.apply(scan, sensor);
+  std::ptrdiff_t deleted = 0;  // on the wall x = 3 (beyond the pane, returns are rightly deleted)
+  for (std::size_t i = 0; i < scan.size(); ++i) {
+    const double x = 2.0 + scan.ranges[i] * std::cos(beamWorldAngle(scan, sensor, i));
+    deleted += labels[i] == kMisdetected && x > 2.9;
+  }
+  return deleted;
+}
+
+// The returns beyond the pane line up as well as the pane's own (a mirror's
+// reflections are the image of a wall), but each was seen beyond the pane:
+// no evidence of a surface of its own.
+TEST(PenetrationFilter, ReturnsSeenBeyondASparseSurfaceMakeNoSurface) {
+  EXPECT_EQ(returnsBeyondALineSeenBeyondAPaneDeleted(), 0);
+}
+
 // Cached frames (0.1° beams, from the origin) put returns at `spots` (each
 // in the beam pointing nearest it); then a frame's beam passes between them,
 // through (1.5, 0.3), to the wall x = 3 behind: is that return misdetected?

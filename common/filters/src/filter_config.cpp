@@ -55,7 +55,35 @@ void readJump(YamlSection& s, FilterConfig& config) {
   s.rejectUnknownKeys();
 }
 
-void readSurfaceMemory(const YamlSection& parent, SurfaceMemoryParams& m) {
+void readSparseSurfaces(const YamlSection& parent, SparseSurfaceParams& p, double& support_reference_deg) {
+  YamlSection s(parent.node(), "sparse_surfaces", parent.file(), parent.path());
+  s.read("enabled", p.enabled);
+  s.read("min_beam_surface_angle_deg", p.min_beam_surface_angle_deg);
+  s.read("neighbour_radius", p.neighbour_radius);
+  s.read("min_neighbours", p.min_neighbours);
+  s.read("max_thickness", p.max_thickness);
+  s.read("max_angle_deg", p.max_angle_deg);
+  s.read("max_gap", p.max_gap);
+  s.read("max_deviation", p.max_deviation);
+  s.read("min_cells", p.min_cells);
+  s.read("min_length", p.min_length);
+  s.read("support_reference_deg", support_reference_deg);
+  s.requireRange("min_beam_surface_angle_deg", p.min_beam_surface_angle_deg, 0.0, 90.0,
+                 "0 <= value <= 90 (degrees; 90: head-on only)");
+  s.requireRange("neighbour_radius", p.neighbour_radius, 1e-3, 10.0, "0.001 <= value <= 10 (m)");
+  s.requireRange("min_neighbours", p.min_neighbours, 3, 1e6, "an integer >= 3 (a cell and two more make a line)");
+  s.requireRange("max_thickness", p.max_thickness, 0.0, 1.0, "0 <= value <= 1 (m)");
+  s.requireRange("max_angle_deg", p.max_angle_deg, 0.0, 90.0, "0 <= value <= 90 (degrees)");
+  s.requireRange("max_gap", p.max_gap, 1e-3, 10.0, "0.001 <= value <= 10 (m)");
+  s.requireRange("max_deviation", p.max_deviation, 0.0, 1.0, "0 <= value <= 1 (m)");
+  s.requireRange("min_cells", p.min_cells, 2, 1e6, "an integer >= 2 (two cells make a line)");
+  s.requireRange("min_length", p.min_length, 1e-3, 100.0, "0.001 <= value <= 100 (m)");
+  s.requireRange("support_reference_deg", support_reference_deg, 0.0, 90.0,
+                 "0 (as given) or the angular step min_neighbours and min_cells are for, in degrees");
+  s.rejectUnknownKeys();
+}
+
+void readSurfaceMemory(const YamlSection& parent, SurfaceMemoryParams& m, double& sparse_support_reference_deg) {
   YamlSection s(parent.node(), "surface_memory", parent.file(), parent.path());
   s.read("lifetime", m.lifetime);
   s.read("min_interval", m.min_interval);
@@ -74,6 +102,8 @@ void readSurfaceMemory(const YamlSection& parent, SurfaceMemoryParams& m) {
   s.read("min_length", m.segments.min_length);
   s.read("end_step", m.segments.end_step);
   s.read("max_gap", m.segments.max_gap);
+  s.take("sparse_surfaces");
+  readSparseSurfaces(s, m.sparse_surfaces, sparse_support_reference_deg);
   s.requireRange("lifetime", m.lifetime, 0.0, 1e6, "a value >= 0 (s; 0: off)");
   s.requireRange("min_interval", m.min_interval, 0.0, 60.0, "0 <= value <= 60 (s)");
   s.requireRange("min_beam_surface_angle_deg", m.min_beam_surface_angle_deg, 0.0, 90.0,
@@ -171,7 +201,7 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.take("alignment");
   readAlignment(s, p.alignment);
   s.take("surface_memory");
-  readSurfaceMemory(s, p.surface_memory);
+  readSurfaceMemory(s, p.surface_memory, config.sparse_support_reference_deg);
   s.requireRange("cell_size", p.cell_size, 1e-3, 10.0, "0.001 <= value <= 10 (m)");
   s.requireRange("frame_lifetime", p.frame_lifetime, 0.0, 1e9, "a value >= 0 (s)");
   s.requireRange("min_frames", p.min_frames, 1, 1e9, "an integer >= 1");
@@ -259,6 +289,12 @@ TwoStepFilterParams FilterConfig::resolve(const SensorInfo& sensor) const {
     // re-observed returns on the real logs (docs/accuracy.md, 26).
     const double beams = beamsPerReferenceStep(free_space_veto_reference_deg, out.jump);
     p.free_space_veto_count = std::max(1, static_cast<int>(std::lround(p.free_space_veto_count * beams)));
+  }
+  if (sparse_support_reference_deg > 0.0) {
+    SparseSurfaceParams& sparse = p.surface_memory.sparse_surfaces;
+    const double scale = std::sqrt(beamsPerReferenceStep(sparse_support_reference_deg, out.jump));
+    sparse.min_neighbours = std::max(3, static_cast<int>(std::lround(sparse.min_neighbours * scale)));
+    sparse.min_cells = std::max(2, static_cast<int>(std::lround(sparse.min_cells * scale)));
   }
   return out;
 }

@@ -4,13 +4,16 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <unordered_map>
 
 #include <spdlog/spdlog.h>
 
+#include "scanfilter/cell_key.hpp"
 #include "scanfilter/depth_edges.hpp"
 #include "scanfilter/grazing_returns.hpp"
 #include "scanfilter/point_code.hpp"
 #include "scanfilter/scan_geometry.hpp"
+#include "scanfilter/sparse_surfaces.hpp"
 
 namespace scanfilter {
 
@@ -119,6 +122,7 @@ void PenetrationFilter::cacheFrame(const Scan& scan, const SensorInfo& sensor, c
   grid_.add(frame.votes);
   if (evidence_now) addRescueEvidence(frame);
   if (params_.free_space_check) frame.image.emplace(scan, sensor, correction_, labels);
+  frame.placed_origin = correction_ * origin;
   cache_.push_back(std::move(frame));
 }
 
@@ -173,13 +177,61 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
       const SurfaceAcrossGap cache_holds = [this](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
         return grid_.holdsSurfaceBetween(a, b);
       };
-      memory_.remember(points_, keptReturns(labels), judgement.origin, scan.stamp, isFullTurn(scan), cache_holds);
+      const bool remembered =
+          memory_.remember(points_, keptReturns(labels), judgement.origin, scan.stamp, isFullTurn(scan), cache_holds);
+      if (remembered && params_.surface_memory.sparse_surfaces.enabled)
+        rememberSparseSurfaces(judgement.origin, scan.stamp);
     }
   } else {
     placeFrame(scan, sensor);
   }
   // Where the alignment put it: the cache stays self-consistent.
   if (caches) cacheFrame(scan, sensor, origin, labels);
+}
+
+void PenetrationFilter::rememberSparseSurfaces(const Eigen::Vector2d& origin, Stamp stamp) {
+  const SparseSurfaceParams& sparse = params_.surface_memory.sparse_surfaces;
+  std::vector<CellMean> cells = cellsInReach(origin);
+  // A return seen beyond a surface is no evidence of another: a mirror's or
+  // a pane's reflections line up too, as the image of the wall they came
+  // from. So every surface found, at any angle, first serves to find the
+  // cells seen beyond it; what lines up without them is remembered.
+  SurfaceMemory surfaces = memory_;
+  surfaces.rememberSegments(sparseSurfaces(cells, grid_.cellSize(), sparse), origin, stamp, 0.0);
+  dropCellsSeenBeyond(surfaces, stamp, cells);
+  const auto found = sparseSurfaces(cells, grid_.cellSize(), sparse);
+  memory_.rememberSegments(found, origin, stamp, sparse.min_beam_surface_angle_deg);
+}
+
+std::vector<CellMean> PenetrationFilter::cellsInReach(const Eigen::Vector2d& origin) const {
+  Eigen::AlignedBox2d box = returnBounds(points_);
+  box.extend(origin);
+  std::vector<CellMean> cells;
+  grid_.forEachCountedIn(grid_.cellOf(box.min()), grid_.cellOf(box.max()), [&](int count, const Eigen::Vector2d& at) {
+    cells.push_back({at, count <= params_.obstacle_threshold});
+  });
+  return cells;
+}
+
+namespace {
+std::uint64_t cellKeyOf(CellIndex c) { return cellKey(c.x, c.y); }
+}  // namespace
+
+void PenetrationFilter::dropCellsSeenBeyond(const SurfaceMemory& surfaces, Stamp stamp,
+                                            std::vector<CellMean>& cells) const {
+  std::unordered_map<std::uint64_t, std::size_t> sparse_cell;
+  for (std::size_t i = 0; i < cells.size(); ++i)
+    if (cells[i].sparse) sparse_cell.emplace(cellKeyOf(grid_.cellOf(cells[i].at)), i);
+  std::vector<bool> seen_beyond(cells.size(), false);
+  for (const CachedFrame& frame : cache_) {
+    for (const CellRun& run : frame.votes) {
+      const auto found = sparse_cell.find(cellKeyOf(run.cell));
+      if (found == sparse_cell.end() || seen_beyond[found->second]) continue;
+      seen_beyond[found->second] = surfaces.liesBeyondASurface(frame.placed_origin, cells[found->second].at, stamp);
+    }
+  }
+  std::size_t i = 0;
+  std::erase_if(cells, [&](const CellMean&) { return seen_beyond[i++]; });
 }
 
 int PenetrationFilter::edgeHalfWidthBeams(const Scan& scan) const {

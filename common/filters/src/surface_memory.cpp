@@ -121,13 +121,11 @@ SurfaceMemory::Segment SurfaceMemory::segmentBetween(const Eigen::Vector2d& a, c
   return {a, unit, {-unit.y(), unit.x()}, length, a.cwiseMin(b), a.cwiseMax(b), last_seen, margin_a, margin_b};
 }
 
-std::vector<SurfaceMemory::Fresh> SurfaceMemory::freshSegments(std::span<const Eigen::Vector2d> points,
-                                                               const BeamMask& usable, const Eigen::Vector2d& origin,
-                                                               Stamp stamp, bool full_turn,
-                                                               const SurfaceAcrossGap& surface_across_gap) const {
-  const double min_sin = std::sin(degreesToRadians(params_.min_beam_surface_angle_deg));
+std::vector<SurfaceMemory::Fresh> SurfaceMemory::facingSegments(std::span<const StraightSegment> found,
+                                                                const Eigen::Vector2d& origin, Stamp stamp,
+                                                                double min_beam_surface_angle_deg) const {
+  const double min_sin = std::sin(degreesToRadians(min_beam_surface_angle_deg));
   std::vector<Fresh> fresh;
-  const auto found = straightSegments(points, usable, origin, params_.segments, full_turn, surface_across_gap);
   for (const StraightSegment& s : found) {
     const Segment segment = segmentBetween(s.a, s.b, stamp, params_.end_margin, params_.end_margin);
     const Eigen::Vector2d to_middle = ((s.a + s.b) / 2 - origin).normalized();
@@ -193,17 +191,28 @@ std::vector<SurfaceMemory::Segment> SurfaceMemory::merged(const Fresh& fresh, co
   return out;
 }
 
-void SurfaceMemory::remember(std::span<const Eigen::Vector2d> points, const BeamMask& usable,
+bool SurfaceMemory::remember(std::span<const Eigen::Vector2d> points, const BeamMask& usable,
                              const Eigen::Vector2d& origin, Stamp stamp, bool full_turn,
                              const SurfaceAcrossGap& surface_across_gap) {
   // A stamp that did not advance is no clock (as in step 2's cache): remembered.
   if (last_remembered_) {
     const double since = stamp.secondsSince(*last_remembered_);
-    if (since > 0.0 && since < params_.min_interval) return;
+    if (since > 0.0 && since < params_.min_interval) return false;
   }
   last_remembered_ = stamp;
+  mergeIn(facingSegments(straightSegments(points, usable, origin, params_.segments, full_turn, surface_across_gap),
+                         origin, stamp, params_.min_beam_surface_angle_deg));
+  return true;
+}
+
+void SurfaceMemory::rememberSegments(std::span<const StraightSegment> found, const Eigen::Vector2d& origin,
+                                     Stamp stamp, double min_beam_surface_angle_deg) {
+  mergeIn(facingSegments(found, origin, stamp, min_beam_surface_angle_deg));
+}
+
+void SurfaceMemory::mergeIn(const std::vector<Fresh>& fresh_segments) {
   std::vector<Segment> added;
-  for (const Fresh& fresh : freshSegments(points, usable, origin, stamp, full_turn, surface_across_gap)) {
+  for (const Fresh& fresh : fresh_segments) {
     std::vector<Segment> olds;
     std::erase_if(segments_, [&](const Segment& old) {
       if (!seenAgain(fresh.segment, old)) return false;

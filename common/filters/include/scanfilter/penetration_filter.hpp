@@ -122,10 +122,17 @@ class PenetrationFilter {
     std::vector<CellRun> others;  // the other returns, in evidence_ only
     bool in_evidence = false;     // its returns are in evidence_ (rescue_min_baseline)
     std::optional<RangeImage> image;  // its ranges, for the free-space check (when on)
+    Eigen::Vector2d placed_origin = Eigen::Vector2d::Zero();  // the sensor where the alignment put the frame
   };
   // Where a frame lies: points_ under the pose and the running correction;
   // returns the sensor origin there.
   Eigen::Vector2d placeFrame(const Scan& scan, const SensorInfo& sensor);
+  // Beyond the paper 29: the surfaces the cache holds a return at a time
+  // (sparse_surfaces.hpp), into the memory, seen from `origin`.
+  void rememberSparseSurfaces(const Eigen::Vector2d& origin, Stamp stamp);
+  std::vector<CellMean> cellsInReach(const Eigen::Vector2d& origin) const;
+  // Drops the sparse cells a cached frame saw beyond a surface of `surfaces`.
+  void dropCellsSeenBeyond(const SurfaceMemory& surfaces, Stamp stamp, std::vector<CellMean>& cells) const;
   struct Judgement {
     bool judged = false;
     Eigen::Isometry2d correction;  // the running correction after this frame

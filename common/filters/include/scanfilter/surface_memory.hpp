@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include "scanfilter/beam_mask.hpp"
+#include "scanfilter/sparse_surfaces.hpp"
 #include "scanfilter/stamp.hpp"
 #include "scanfilter/straight_segments.hpp"
 
@@ -28,6 +29,9 @@ struct SurfaceMemoryParams {
   double head_on_deg = 5.0;                 // degrees off a segment's normal where a mirror or pane returns the beam
   int head_on_through_beams = 2;            // beams seen through it there, none on it: it is gone; 0: never
   StraightSegmentParams segments;
+  // Surfaces the cache holds a return at a time, found by the penetration
+  // filter (sparse_surfaces.hpp) and remembered here too.
+  SparseSurfaceParams sparse_surfaces;
 };
 
 // Beyond the paper: the flat surfaces that judged frames saw well, remembered
@@ -74,9 +78,16 @@ class SurfaceMemory {
                                const Eigen::Vector2d& origin);
   // Remembers the straight surfaces of one frame's usable returns (on a
   // full turn, across the scan's seam too; across the gaps that
-  // `surface_across_gap` vouches for, straightSegments).
-  void remember(std::span<const Eigen::Vector2d> points, const BeamMask& usable, const Eigen::Vector2d& origin,
+  // `surface_across_gap` vouches for, straightSegments). False when the
+  // frame came sooner than min_interval after the last one remembered, and
+  // nothing was.
+  bool remember(std::span<const Eigen::Vector2d> points, const BeamMask& usable, const Eigen::Vector2d& origin,
                 Stamp stamp, bool full_turn = false, const SurfaceAcrossGap& surface_across_gap = {});
+  // Remembers segments found otherwise (sparseSurfaces), seen from `origin`
+  // at `stamp`; those the beam to their middle meets at less than
+  // `min_beam_surface_angle_deg` are left out.
+  void rememberSegments(std::span<const StraightSegment> found, const Eigen::Vector2d& origin, Stamp stamp,
+                        double min_beam_surface_angle_deg);
   std::size_t size() const { return segments_.size(); }
 
  private:
@@ -108,9 +119,10 @@ class SurfaceMemory {
   };
   Segment segmentBetween(const Eigen::Vector2d& a, const Eigen::Vector2d& b, Stamp last_seen, double margin_a,
                          double margin_b) const;
-  std::vector<Fresh> freshSegments(std::span<const Eigen::Vector2d> points, const BeamMask& usable,
-                                   const Eigen::Vector2d& origin, Stamp stamp, bool full_turn,
-                                   const SurfaceAcrossGap& surface_across_gap) const;
+  std::vector<Fresh> facingSegments(std::span<const StraightSegment> found, const Eigen::Vector2d& origin,
+                                    Stamp stamp, double min_beam_surface_angle_deg) const;
+  // Each as a surface seen again (merged with what it overlaps) or new.
+  void mergeIn(const std::vector<Fresh>& fresh_segments);
   bool seenAgain(const Segment& now, const Segment& old) const;
   // The new segment and what is remembered beyond it, on one line.
   std::vector<Segment> merged(const Fresh& now, const std::vector<Segment>& olds) const;
