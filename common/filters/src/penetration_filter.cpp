@@ -192,14 +192,16 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
 void PenetrationFilter::rememberSparseSurfaces(const Eigen::Vector2d& origin, Stamp stamp) {
   const SparseSurfaceParams& sparse = params_.surface_memory.sparse_surfaces;
   std::vector<CellMean> cells = cellsInReach(origin);
+  std::vector<StraightSegment> found = sparseSurfaces(cells, grid_.cellSize(), sparse);
+  if (found.empty()) return;
   // A return seen beyond a surface is no evidence of another: a mirror's or
   // a pane's reflections line up too, as the image of the wall they came
   // from. So every surface found, at any angle, first serves to find the
-  // cells seen beyond it; what lines up without them is remembered.
+  // cells of the others seen beyond it; what lines up without them is
+  // remembered.
   SurfaceMemory surfaces = memory_;
-  surfaces.rememberSegments(sparseSurfaces(cells, grid_.cellSize(), sparse), origin, stamp, 0.0);
-  dropCellsSeenBeyond(surfaces, stamp, cells);
-  const auto found = sparseSurfaces(cells, grid_.cellSize(), sparse);
+  surfaces.rememberSegments(found, origin, stamp, 0.0);
+  if (dropCellsSeenBeyond(surfaces, found, stamp, cells)) found = sparseSurfaces(cells, grid_.cellSize(), sparse);
   memory_.rememberSegments(found, origin, stamp, sparse.min_beam_surface_angle_deg);
 }
 
@@ -215,23 +217,40 @@ std::vector<CellMean> PenetrationFilter::cellsInReach(const Eigen::Vector2d& ori
 
 namespace {
 std::uint64_t cellKeyOf(CellIndex c) { return cellKey(c.x, c.y); }
+
+double distanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const Eigen::Vector2d ab = b - a;
+  const double t = std::clamp((p - a).dot(ab) / std::max(ab.squaredNorm(), 1e-18), 0.0, 1.0);
+  return (p - (a + t * ab)).norm();
+}
 }  // namespace
 
-void PenetrationFilter::dropCellsSeenBeyond(const SurfaceMemory& surfaces, Stamp stamp,
-                                            std::vector<CellMean>& cells) const {
-  std::unordered_map<std::uint64_t, std::size_t> sparse_cell;
+bool PenetrationFilter::dropCellsSeenBeyond(const SurfaceMemory& surfaces, std::span<const StraightSegment> found,
+                                            Stamp stamp, std::vector<CellMean>& cells) const {
+  // Only the sparse cells of the surfaces found can change what is found.
+  const double tolerance = params_.surface_memory.sparse_surfaces.max_deviation + grid_.cellSize();
+  const auto onAFoundSurface = [&](const Eigen::Vector2d& p) {
+    return std::any_of(found.begin(), found.end(), [&](const StraightSegment& s) {
+      return distanceToSegment(p, s.a, s.b) <= tolerance;
+    });
+  };
+  std::unordered_map<std::uint64_t, std::size_t> candidate;
   for (std::size_t i = 0; i < cells.size(); ++i)
-    if (cells[i].sparse) sparse_cell.emplace(cellKeyOf(grid_.cellOf(cells[i].at)), i);
+    if (cells[i].sparse && onAFoundSurface(cells[i].at)) candidate.emplace(cellKeyOf(grid_.cellOf(cells[i].at)), i);
   std::vector<bool> seen_beyond(cells.size(), false);
+  bool any = false;
   for (const CachedFrame& frame : cache_) {
     for (const CellRun& run : frame.votes) {
-      const auto found = sparse_cell.find(cellKeyOf(run.cell));
-      if (found == sparse_cell.end() || seen_beyond[found->second]) continue;
-      seen_beyond[found->second] = surfaces.liesBeyondASurface(frame.placed_origin, cells[found->second].at, stamp);
+      const auto it = candidate.find(cellKeyOf(run.cell));
+      if (it == candidate.end() || seen_beyond[it->second]) continue;
+      seen_beyond[it->second] = surfaces.liesBeyondASurface(frame.placed_origin, cells[it->second].at, stamp);
+      any = any || seen_beyond[it->second];
     }
   }
+  if (!any) return false;
   std::size_t i = 0;
   std::erase_if(cells, [&](const CellMean&) { return seen_beyond[i++]; });
+  return true;
 }
 
 int PenetrationFilter::edgeHalfWidthBeams(const Scan& scan) const {

@@ -131,8 +131,10 @@ class PenetrationFilter {
   // (sparse_surfaces.hpp), into the memory, seen from `origin`.
   void rememberSparseSurfaces(const Eigen::Vector2d& origin, Stamp stamp);
   std::vector<CellMean> cellsInReach(const Eigen::Vector2d& origin) const;
-  // Drops the sparse cells a cached frame saw beyond a surface of `surfaces`.
-  void dropCellsSeenBeyond(const SurfaceMemory& surfaces, Stamp stamp, std::vector<CellMean>& cells) const;
+  // Drops the sparse cells of the surfaces `found` that a cached frame saw
+  // beyond a surface of `surfaces`; whether it dropped any.
+  bool dropCellsSeenBeyond(const SurfaceMemory& surfaces, std::span<const StraightSegment> found, Stamp stamp,
+                           std::vector<CellMean>& cells) const;
   struct Judgement {
     bool judged = false;
     Eigen::Isometry2d correction;  // the running correction after this frame
