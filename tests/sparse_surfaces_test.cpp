@@ -1,13 +1,17 @@
 // sparseSurfaces: which lines of thinly filled cells make a surface.
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <map>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include <gtest/gtest.h>
 
+#include "scanfilter/floor_to_int.hpp"
 #include "scanfilter/sparse_surfaces.hpp"
 
 namespace scanfilter {
@@ -15,8 +19,13 @@ namespace {
 
 constexpr double kCell = 0.05;
 
+CellMean sparseCellAt(Eigen::Vector2d at) {
+  return {{floorToInt(at.x() / kCell), floorToInt(at.y() / kCell)}, at, true};
+}
+
 // The cell means of a pane along y = `y` from x0 to x1: one return in every
-// cell it crosses, `jitter` m off the line, none in the cells listed as holes.
+// cell it crosses, `jitter` m off the line (σ), none in the cells listed as
+// holes (counted from x0).
 std::vector<CellMean> pane(double x0, double x1, double y, double jitter = 0.004, std::vector<int> holes = {}) {
   std::vector<CellMean> cells;
   std::mt19937 rng(7);
@@ -24,7 +33,8 @@ std::vector<CellMean> pane(double x0, double x1, double y, double jitter = 0.004
   const int n = static_cast<int>(std::lround((x1 - x0) / kCell));
   for (int k = 0; k < n; ++k) {
     if (std::find(holes.begin(), holes.end(), k) != holes.end()) continue;
-    cells.push_back({{x0 + (k + 0.5) * kCell, y + noise(rng)}, true});
+    // Inside its cell whatever the jitter: the cell is the one it falls in.
+    cells.push_back(sparseCellAt({x0 + (k + 0.5) * kCell, y + noise(rng)}));
   }
   return cells;
 }
@@ -35,29 +45,37 @@ bool spans(const StraightSegment& s, Eigen::Vector2d from, Eigen::Vector2d to, d
   return forward || backward;
 }
 
+std::vector<StraightSegment> surfacesOf(const std::vector<CellMean>& cells,
+                                        const SparseSurfaceParams& params = SparseSurfaceParams{}) {
+  return sparseSurfaces(cells, kCell, params);
+}
+
 TEST(SparseSurfaces, APaneWithOneReturnACellIsOneSurfaceEndToEnd) {
-  const auto found = sparseSurfaces(pane(0.0, 2.0, 1.0), kCell, SparseSurfaceParams{});
+  const auto found = surfacesOf(pane(0.0, 2.0, 1.0));
   ASSERT_EQ(found.size(), 1u);
   EXPECT_TRUE(spans(found[0], {0.025, 1.0}, {1.975, 1.0}, 0.02));
 }
 
 TEST(SparseSurfaces, HolesNarrowerThanMaxGapAreBridgedAWiderGapSplits) {
   // Holes of 3 cells (0.15 m, a pane that returned nothing there) are bridged.
-  const auto holed = sparseSurfaces(pane(0.0, 2.0, 1.0, 0.004, {5, 6, 7, 20, 21, 22}), kCell, SparseSurfaceParams{});
-  ASSERT_EQ(holed.size(), 1u);
+  EXPECT_EQ(surfacesOf(pane(0.0, 2.0, 1.0, 0.004, {5, 6, 7, 20, 21, 22})).size(), 1u);
   // A 0.9 m doorway (18 cells) splits it in two.
   std::vector<int> doorway;
   for (int k = 10; k < 28; ++k) doorway.push_back(k);
-  const auto split = sparseSurfaces(pane(0.0, 2.0, 1.0, 0.004, doorway), kCell, SparseSurfaceParams{});
-  ASSERT_EQ(split.size(), 2u);
+  EXPECT_EQ(surfacesOf(pane(0.0, 2.0, 1.0, 0.004, doorway)).size(), 2u);
 }
 
 TEST(SparseSurfaces, ScatteredCellsMakeNone) {
-  std::vector<CellMean> cells;
+  std::map<std::pair<int, int>, CellMean> distinct;  // one mean a cell, as the grid gives
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> where(0.0, 3.0);
-  for (int k = 0; k < 300; ++k) cells.push_back({{where(rng), where(rng)}, true});
-  EXPECT_TRUE(sparseSurfaces(cells, kCell, SparseSurfaceParams{}).empty());
+  for (int k = 0; k < 300; ++k) {
+    const CellMean c = sparseCellAt({where(rng), where(rng)});
+    distinct.emplace(std::pair{c.cell.x, c.cell.y}, c);
+  }
+  std::vector<CellMean> cells;
+  for (const auto& [key, c] : distinct) cells.push_back(c);
+  EXPECT_TRUE(surfacesOf(cells).empty());
 }
 
 TEST(SparseSurfaces, AThickBandIsNoSurface) {
@@ -68,36 +86,70 @@ TEST(SparseSurfaces, AThickBandIsNoSurface) {
     const auto row = pane(0.0, 2.0, y);
     band.insert(band.end(), row.begin(), row.end());
   }
-  EXPECT_TRUE(sparseSurfaces(band, kCell, SparseSurfaceParams{}).empty());
+  EXPECT_TRUE(surfacesOf(band).empty());
 }
 
 TEST(SparseSurfaces, TooShortOrTooFewCellsIsNoSurface) {
-  EXPECT_TRUE(sparseSurfaces(pane(0.0, 0.25, 1.0), kCell, SparseSurfaceParams{}).empty());  // 5 cells, 0.2 m
+  // Six cells over 0.25 m: enough cells, too short; long enough at 0.2 m.
+  EXPECT_TRUE(surfacesOf(pane(0.0, 0.30, 1.0)).empty());
+  SparseSurfaceParams shorter;
+  shorter.min_length = 0.2;
+  EXPECT_EQ(surfacesOf(pane(0.0, 0.30, 1.0), shorter).size(), 1u);
   SparseSurfaceParams need_more;
   need_more.min_cells = 50;
-  EXPECT_TRUE(sparseSurfaces(pane(0.0, 2.0, 1.0), kCell, need_more).empty());  // 40 cells
+  EXPECT_TRUE(surfacesOf(pane(0.0, 2.0, 1.0), need_more).empty());  // 40 cells
 }
 
 TEST(SparseSurfaces, OnlySparseCellsMakeASurfaceObstaclesStillCountAsNeighbours) {
   // A wall whose cells are all obstacles is the cache's own business.
   std::vector<CellMean> wall = pane(0.0, 2.0, 1.0);
   for (CellMean& c : wall) c.sparse = false;
-  EXPECT_TRUE(sparseSurfaces(wall, kCell, SparseSurfaceParams{}).empty());
+  EXPECT_TRUE(surfacesOf(wall).empty());
   // Every other cell an obstacle (a pane seen head-on in places): still a
   // surface, from the sparse ones, with the obstacles as their neighbours.
   std::vector<CellMean> mixed = pane(0.0, 2.0, 1.0);
   for (std::size_t k = 0; k < mixed.size(); k += 2) mixed[k].sparse = false;
-  EXPECT_EQ(sparseSurfaces(mixed, kCell, SparseSurfaceParams{}).size(), 1u);
+  EXPECT_EQ(surfacesOf(mixed).size(), 1u);
+}
+
+TEST(SparseSurfaces, ACurveIsNoSurface) {
+  // A bend of 0.2 m over 2 m: each cell's neighbourhood is thin, but the
+  // whole lies farther than max_deviation off its fitted line.
+  std::vector<CellMean> arc;
+  for (int k = 0; k < 40; ++k) {
+    const double x = (k + 0.5) * kCell, u = x - 1.0;
+    arc.push_back(sparseCellAt({x, 1.0 + 0.2 * (1.0 - u * u)}));
+  }
+  EXPECT_TRUE(surfacesOf(arc).empty());
+}
+
+TEST(SparseSurfaces, CrossingPanesAreNotJoinedAcrossTheirAngle) {
+  std::vector<CellMean> cells = pane(0.0, 2.0, 1.0);
+  for (int k = 0; k < 40; ++k) {
+    if (k == 20) continue;  // the crossing cell is the horizontal pane's
+    cells.push_back(sparseCellAt({1.0 + 0.002 * (k % 2), (k + 0.5) * kCell}));
+  }
+  const auto found = surfacesOf(cells);
+  ASSERT_FALSE(found.empty());
+  for (const StraightSegment& s : found) {
+    const Eigen::Vector2d d = (s.b - s.a).normalized();
+    EXPECT_GT(std::max(std::abs(d.x()), std::abs(d.y())), 0.99) << "every surface along one pane or the other";
+  }
 }
 
 TEST(SparseSurfaces, TwoPanesApartAreTwoSurfaces) {
   std::vector<CellMean> cells = pane(0.0, 2.0, 1.0);
-  // A vertical pane x = 3 (beside the first, not touching it).
-  for (int k = 0; k < 40; ++k) cells.push_back({{3.0 + 0.002 * (k % 2), (k + 0.5) * kCell}, true});
-  EXPECT_EQ(sparseSurfaces(cells, kCell, SparseSurfaceParams{}).size(), 2u);
+  for (int k = 0; k < 40; ++k) cells.push_back(sparseCellAt({3.0 + 0.002 * (k % 2), (k + 0.5) * kCell}));
+  EXPECT_EQ(surfacesOf(cells).size(), 2u);
 }
 
-TEST(SparseSurfaces, NoCellsNoSurface) { EXPECT_TRUE(sparseSurfaces({}, kCell, SparseSurfaceParams{}).empty()); }
+TEST(SparseSurfaces, NoCellsOrNoFiniteCellsNoSurface) {
+  EXPECT_TRUE(sparseSurfaces({}, kCell, SparseSurfaceParams{}).empty());
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<CellMean> cells = pane(0.0, 2.0, 1.0);
+  cells.push_back({{5, 5}, {nan, nan}, true});
+  EXPECT_EQ(surfacesOf(cells).size(), 1u) << "a cell without a finite mean is left out";
+}
 
 }  // namespace
 }  // namespace scanfilter

@@ -249,6 +249,13 @@ double beamsPerReferenceStep(double reference_deg, const JumpFilterParams& jump)
   return reference_deg / jump.angular_accuracy_deg;
 }
 
+// count x factor, rounded, at least `least`; clamped before the cast, so
+// that a huge configured count at a fine step cannot wrap around.
+int scaledCount(int count, double factor, int least) {
+  const double scaled = std::round(static_cast<double>(count) * factor);
+  return static_cast<int>(std::clamp(scaled, static_cast<double>(least), 1e9));
+}
+
 }  // namespace
 
 FilterConfig parseFilterConfig(const std::string& yaml_text, const std::string& name) {
@@ -282,19 +289,19 @@ TwoStepFilterParams FilterConfig::resolve(const SensorInfo& sensor) const {
   PenetrationFilterParams& p = out.penetration;
   if (obstacle_threshold_reference_deg > 0.0) {
     const double beams = beamsPerReferenceStep(obstacle_threshold_reference_deg, out.jump);
-    p.obstacle_threshold = static_cast<int>(std::lround(p.obstacle_threshold * beams));
+    p.obstacle_threshold = scaledCount(p.obstacle_threshold, beams, 0);
   }
   if (free_space_veto_reference_deg > 0.0) {
     // rescue_min_count is not scaled: measured, scaling it too lost more
     // re-observed returns on the real logs (docs/accuracy.md, 26).
     const double beams = beamsPerReferenceStep(free_space_veto_reference_deg, out.jump);
-    p.free_space_veto_count = std::max(1, static_cast<int>(std::lround(p.free_space_veto_count * beams)));
+    p.free_space_veto_count = scaledCount(p.free_space_veto_count, beams, 1);
   }
   if (sparse_support_reference_deg > 0.0) {
     SparseSurfaceParams& sparse = p.surface_memory.sparse_surfaces;
     const double scale = std::sqrt(beamsPerReferenceStep(sparse_support_reference_deg, out.jump));
-    sparse.min_neighbours = std::max(3, static_cast<int>(std::lround(sparse.min_neighbours * scale)));
-    sparse.min_cells = std::max(2, static_cast<int>(std::lround(sparse.min_cells * scale)));
+    sparse.min_neighbours = scaledCount(sparse.min_neighbours, scale, 3);  // a cell and two more make a line
+    sparse.min_cells = scaledCount(sparse.min_cells, scale, 2);
   }
   return out;
 }

@@ -104,9 +104,10 @@ void PenetrationFilter::cacheFrame(const Scan& scan, const SensorInfo& sensor, c
   const BeamMask edge =
       edge_beams > 0 ? nearSideOfDepthEdge(scan, keptReturns(labels), edge_beams, params_.edge_depth_step)
                      : BeamMask{};
+  frame.placed_origin = correction_ * origin;
   const BeamMask grazing =
       params_.grazing_vote_max_deg > 0.0
-          ? returnsAtGrazingIncidence(points_, correction_ * origin, scan.angle_increment,
+          ? returnsAtGrazingIncidence(points_, frame.placed_origin, scan.angle_increment,
                                       params_.grazing_vote_max_deg, params_.straddle_half_width)
           : BeamMask{};
   for (std::size_t i = 0; i < labels.size(); ++i) {
@@ -122,7 +123,6 @@ void PenetrationFilter::cacheFrame(const Scan& scan, const SensorInfo& sensor, c
   grid_.add(frame.votes);
   if (evidence_now) addRescueEvidence(frame);
   if (params_.free_space_check) frame.image.emplace(scan, sensor, correction_, labels);
-  frame.placed_origin = correction_ * origin;
   cache_.push_back(std::move(frame));
 }
 
@@ -196,9 +196,10 @@ void PenetrationFilter::rememberSparseSurfaces(const Eigen::Vector2d& origin, St
   if (found.empty()) return;
   // A return seen beyond a surface is no evidence of another: a mirror's or
   // a pane's reflections line up too, as the image of the wall they came
-  // from. So every surface found, at any angle, first serves to find the
-  // cells of the others seen beyond it; what lines up without them is
-  // remembered.
+  // from. So the surfaces found, at any angle, are remembered in a copy of
+  // the memory, which then serves to find the cells on them that a cached
+  // frame saw beyond a surface; the search runs again without those (what
+  // it then finds is not asked again).
   SurfaceMemory surfaces = memory_;
   surfaces.rememberSegments(found, origin, stamp, 0.0);
   if (dropCellsSeenBeyond(surfaces, found, stamp, cells)) found = sparseSurfaces(cells, grid_.cellSize(), sparse);
@@ -209,47 +210,42 @@ std::vector<CellMean> PenetrationFilter::cellsInReach(const Eigen::Vector2d& ori
   Eigen::AlignedBox2d box = returnBounds(points_);
   box.extend(origin);
   std::vector<CellMean> cells;
-  grid_.forEachCountedIn(grid_.cellOf(box.min()), grid_.cellOf(box.max()), [&](int count, const Eigen::Vector2d& at) {
-    cells.push_back({at, count <= params_.obstacle_threshold});
-  });
+  grid_.forEachCountedCellIn(grid_.cellOf(box.min()), grid_.cellOf(box.max()),
+                             [&](CellIndex c, int count, const Eigen::Vector2d& at) {
+                               cells.push_back({c, at, count <= params_.obstacle_threshold});
+                             });
   return cells;
 }
 
-namespace {
-std::uint64_t cellKeyOf(CellIndex c) { return cellKey(c.x, c.y); }
-
-double distanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  const Eigen::Vector2d ab = b - a;
-  const double t = std::clamp((p - a).dot(ab) / std::max(ab.squaredNorm(), 1e-18), 0.0, 1.0);
-  return (p - (a + t * ab)).norm();
-}
-}  // namespace
-
 bool PenetrationFilter::dropCellsSeenBeyond(const SurfaceMemory& surfaces, std::span<const StraightSegment> found,
                                             Stamp stamp, std::vector<CellMean>& cells) const {
-  // Only the sparse cells of the surfaces found can change what is found.
+  // Only the sparse cells on the surfaces found are asked: the others could
+  // change what is found only as neighbours, and asking every cached run
+  // about every sparse cell cost as much as the search itself.
   const double tolerance = params_.surface_memory.sparse_surfaces.max_deviation + grid_.cellSize();
   const auto onAFoundSurface = [&](const Eigen::Vector2d& p) {
     return std::any_of(found.begin(), found.end(), [&](const StraightSegment& s) {
       return distanceToSegment(p, s.a, s.b) <= tolerance;
     });
   };
-  std::unordered_map<std::uint64_t, std::size_t> candidate;
+  std::unordered_map<std::uint64_t, std::size_t> asked;  // cell key -> index in `cells`
   for (std::size_t i = 0; i < cells.size(); ++i)
-    if (cells[i].sparse && onAFoundSurface(cells[i].at)) candidate.emplace(cellKeyOf(grid_.cellOf(cells[i].at)), i);
+    if (cells[i].sparse && onAFoundSurface(cells[i].at)) asked.emplace(cellKey(cells[i].cell.x, cells[i].cell.y), i);
   std::vector<bool> seen_beyond(cells.size(), false);
   bool any = false;
   for (const CachedFrame& frame : cache_) {
     for (const CellRun& run : frame.votes) {
-      const auto it = candidate.find(cellKeyOf(run.cell));
-      if (it == candidate.end() || seen_beyond[it->second]) continue;
+      const auto it = asked.find(cellKey(run.cell.x, run.cell.y));
+      if (it == asked.end() || seen_beyond[it->second]) continue;
       seen_beyond[it->second] = surfaces.liesBeyondASurface(frame.placed_origin, cells[it->second].at, stamp);
       any = any || seen_beyond[it->second];
     }
   }
   if (!any) return false;
-  std::size_t i = 0;
-  std::erase_if(cells, [&](const CellMean&) { return seen_beyond[i++]; });
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < cells.size(); ++i)
+    if (!seen_beyond[i]) cells[kept++] = cells[i];
+  cells.resize(kept);
   return true;
 }
 

@@ -6,57 +6,64 @@
 #include <cstdint>
 #include <numeric>
 #include <optional>
-#include <utility>
+#include <unordered_map>
 
-#include "scanfilter/floor_to_int.hpp"
+#include "scanfilter/cell_key.hpp"
 #include "scanfilter/scan_geometry.hpp"
 
 namespace scanfilter {
 namespace {
 
-// The cells by position: a dense rectangle over their bounds, so that
-// looking up a neighbour costs an array read (the cells of one frame's
-// reach, a few thousand in a rectangle of some ten thousand).
+// The cells by position. Over a frame's reach indoors (some ten thousand
+// cells) a dense rectangle, so that looking up a neighbour costs an array
+// read; over a larger one (a 30 m scanner's 1,200 x 1,200 cells) a hash
+// map, rather than zeroing megabytes every time.
 class CellRaster {
  public:
-  CellRaster(std::span<const CellMean> cells, double cell_size) {
-    positions_.reserve(cells.size());
-    for (const CellMean& c : cells)
-      positions_.emplace_back(floorToInt(c.at.x() / cell_size), floorToInt(c.at.y() / cell_size));
-    x0_ = y0_ = 0;
-    int x1 = -1, y1 = -1;
-    if (!positions_.empty()) {
-      x0_ = x1 = positions_.front().first;
-      y0_ = y1 = positions_.front().second;
+  static constexpr std::int64_t kMaxDenseCells = 1 << 20;
+
+  explicit CellRaster(std::span<const CellMean> cells) : cells_(cells) {
+    if (cells.empty()) return;
+    lo_ = hi_ = cells.front().cell;
+    for (const CellMean& c : cells) {
+      lo_ = {std::min(lo_.x, c.cell.x), std::min(lo_.y, c.cell.y)};
+      hi_ = {std::max(hi_.x, c.cell.x), std::max(hi_.y, c.cell.y)};
     }
-    for (const auto& [x, y] : positions_) {
-      x0_ = std::min(x0_, x), x1 = std::max(x1, x);
-      y0_ = std::min(y0_, y), y1 = std::max(y1, y);
+    width_ = std::int64_t{hi_.x} - lo_.x + 1;
+    const std::int64_t height = std::int64_t{hi_.y} - lo_.y + 1;
+    dense_ = width_ * height <= kMaxDenseCells;
+    if (dense_) index_.assign(static_cast<std::size_t>(width_ * height), -1);
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      if (dense_) index_[offset(cells[i].cell)] = static_cast<int>(i);
+      else sparse_index_.emplace(cellKey(cells[i].cell.x, cells[i].cell.y), static_cast<int>(i));
     }
-    width_ = x1 - x0_ + 1;
-    height_ = y1 - y0_ + 1;
-    index_.assign(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), -1);
-    for (std::size_t i = 0; i < positions_.size(); ++i)
-      index_[offset(positions_[i].first, positions_[i].second)] = static_cast<int>(i);
   }
 
   // fn(j) for every cell j within `reach` cells of cell i (in x and in y), i itself too.
   template <typename Fn>
   void forEachNear(std::size_t i, int reach, Fn&& fn) const {
-    const auto [cx, cy] = positions_[i];
-    for (int y = std::max(cy - reach, y0_); y <= std::min(cy + reach, y0_ + height_ - 1); ++y)
-      for (int x = std::max(cx - reach, x0_); x <= std::min(cx + reach, x0_ + width_ - 1); ++x)
-        if (const int j = index_[offset(x, y)]; j >= 0) fn(static_cast<std::size_t>(j));
+    const CellIndex c = cells_[i].cell;
+    for (std::int32_t y = std::max(c.y - reach, lo_.y); y <= std::min(c.y + reach, hi_.y); ++y)
+      for (std::int32_t x = std::max(c.x - reach, lo_.x); x <= std::min(c.x + reach, hi_.x); ++x)
+        if (const int j = at({x, y}); j >= 0) fn(static_cast<std::size_t>(j));
   }
 
  private:
-  std::size_t offset(int x, int y) const {
-    return static_cast<std::size_t>(y - y0_) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x - x0_);
+  std::size_t offset(CellIndex c) const {
+    return static_cast<std::size_t>((std::int64_t{c.y} - lo_.y) * width_ + (std::int64_t{c.x} - lo_.x));
+  }
+  int at(CellIndex c) const {
+    if (dense_) return index_[offset(c)];
+    const auto found = sparse_index_.find(cellKey(c.x, c.y));
+    return found == sparse_index_.end() ? -1 : found->second;
   }
 
-  std::vector<std::pair<int, int>> positions_;
+  std::span<const CellMean> cells_;
+  CellIndex lo_, hi_;
+  std::int64_t width_ = 0;
+  bool dense_ = true;
   std::vector<int> index_;
-  int x0_ = 0, y0_ = 0, width_ = 0, height_ = 0;
+  std::unordered_map<std::uint64_t, int> sparse_index_;
 };
 
 // The axes of a 2 x 2 covariance in closed form (the general eigensolver
@@ -79,6 +86,9 @@ PrincipalAxes principalAxes(const Eigen::Matrix2d& covariance) {
 
 int cellsWithin(double distance, double cell_size) { return static_cast<int>(std::ceil(distance / cell_size)); }
 
+// How far off a line a cell may lie and still be on it.
+double onLineTolerance(const SparseSurfaceParams& params) { return 2 * params.max_thickness; }
+
 // The direction of the line the cells around sparse cell i lie along, when
 // they lie thinly along one that passes through cell i itself.
 std::optional<Eigen::Vector2d> localDirection(std::span<const CellMean> cells, const CellRaster& raster,
@@ -90,7 +100,7 @@ std::optional<Eigen::Vector2d> localDirection(std::span<const CellMean> cells, c
   int n = 0;
   raster.forEachNear(i, cellsWithin(params.neighbour_radius, cell_size), [&](std::size_t j) {
     const Eigen::Vector2d d = cells[j].at - centre;
-    if (d.squaredNorm() > radius_sq) return;
+    if (!(d.squaredNorm() <= radius_sq)) return;  // NaN too
     sum += d;
     products += d * d.transpose();
     ++n;
@@ -98,8 +108,8 @@ std::optional<Eigen::Vector2d> localDirection(std::span<const CellMean> cells, c
   if (n < params.min_neighbours) return std::nullopt;
   const Eigen::Vector2d mean = sum / n;
   const PrincipalAxes axes = principalAxes(products / n - mean * mean.transpose());
-  if (std::sqrt(axes.variance_across) > params.max_thickness) return std::nullopt;
-  if (std::abs(axes.across.dot(mean)) > 2 * params.max_thickness) return std::nullopt;  // the cell off that line
+  if (!(std::sqrt(axes.variance_across) <= params.max_thickness)) return std::nullopt;
+  if (!(std::abs(axes.across.dot(mean)) <= onLineTolerance(params))) return std::nullopt;  // the cell off that line
   return axes.along;
 }
 
@@ -108,26 +118,29 @@ std::size_t rootOf(std::vector<std::size_t>& parent, std::size_t i) {
   return i;
 }
 
-// Groups of cells with a local line, joined where two lie within max_gap of
-// each other, alike in direction, each on the other's line.
+// Whether two cells with local lines belong to one surface: near each
+// other, alike in direction, each on the other's line.
+bool sameSurface(const CellMean& a, const Eigen::Vector2d& a_direction, const CellMean& b,
+                 const Eigen::Vector2d& b_direction, const SparseSurfaceParams& params) {
+  const Eigen::Vector2d d = b.at - a.at;
+  if (d.squaredNorm() > params.max_gap * params.max_gap) return false;
+  if (std::abs(a_direction.dot(b_direction)) < std::cos(degreesToRadians(params.max_angle_deg))) return false;
+  const auto offLine = [&](const Eigen::Vector2d& direction) { return std::abs(cross(direction, d)); };
+  return offLine(a_direction) <= onLineTolerance(params) && offLine(b_direction) <= onLineTolerance(params);
+}
+
+// Groups of at least min_cells cells with a local line, joined pairwise by
+// sameSurface; each group in the order of `cells`.
 std::vector<std::vector<std::size_t>> joinedLines(std::span<const CellMean> cells, const CellRaster& raster,
                                                   const std::vector<std::optional<Eigen::Vector2d>>& direction,
                                                   double cell_size, const SparseSurfaceParams& params) {
   std::vector<std::size_t> parent(cells.size());
   std::iota(parent.begin(), parent.end(), std::size_t{0});
-  const double min_cos = std::cos(degreesToRadians(params.max_angle_deg));
-  const double gap_sq = params.max_gap * params.max_gap;
-  const double off_line = 2 * params.max_thickness;
   for (std::size_t i = 0; i < cells.size(); ++i) {
     if (!direction[i]) continue;
-    const Eigen::Vector2d normal(-direction[i]->y(), direction[i]->x());
     raster.forEachNear(i, cellsWithin(params.max_gap, cell_size), [&](std::size_t j) {
-      if (j <= i || !direction[j]) return;
-      const Eigen::Vector2d d = cells[j].at - cells[i].at;
-      if (d.squaredNorm() > gap_sq || std::abs(direction[i]->dot(*direction[j])) < min_cos ||
-          std::abs(normal.dot(d)) > off_line)
-        return;
-      parent[rootOf(parent, j)] = rootOf(parent, i);
+      if (j > i && direction[j] && sameSurface(cells[i], *direction[i], cells[j], *direction[j], params))
+        parent[rootOf(parent, j)] = rootOf(parent, i);
     });
   }
   std::vector<std::vector<std::size_t>> groups(cells.size());
@@ -137,46 +150,44 @@ std::vector<std::vector<std::size_t>> joinedLines(std::span<const CellMean> cell
   return groups;
 }
 
-// The group's fitted line, cut where its cells lie farther apart than
-// max_gap; each piece long, full and straight enough is a surface.
-void appendSurfaces(std::span<const CellMean> cells, const std::vector<std::size_t>& group,
-                    const SparseSurfaceParams& params, std::vector<StraightSegment>& out) {
+// The group's fitted line from its first cell to its last along it, if the
+// group is long enough and every cell lies near that line. Joined cells lie
+// within max_gap of each other, so no gap along the line is wider.
+std::optional<StraightSegment> fittedSurface(std::span<const CellMean> cells, const std::vector<std::size_t>& group,
+                                             const SparseSurfaceParams& params) {
   Eigen::Vector2d mean = Eigen::Vector2d::Zero();
   for (const std::size_t i : group) mean += cells[i].at;
   mean /= static_cast<double>(group.size());
   Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
   for (const std::size_t i : group) scatter += (cells[i].at - mean) * (cells[i].at - mean).transpose();
   const PrincipalAxes fit = principalAxes(scatter);
-  const Eigen::Vector2d along = fit.along, across = fit.across;
-  std::vector<std::pair<double, double>> placed;  // (along, across) the fitted line, from the mean
-  placed.reserve(group.size());
-  for (const std::size_t i : group) placed.emplace_back(along.dot(cells[i].at - mean), across.dot(cells[i].at - mean));
-  std::sort(placed.begin(), placed.end());
-  std::size_t first = 0;
-  for (std::size_t k = 1; k <= placed.size(); ++k) {
-    if (k < placed.size() && placed[k].first - placed[k - 1].first <= params.max_gap) continue;
-    const double length = placed[k - 1].first - placed[first].first;
-    const bool straight = std::all_of(placed.begin() + static_cast<std::ptrdiff_t>(first),
-                                      placed.begin() + static_cast<std::ptrdiff_t>(k),
-                                      [&](const auto& p) { return std::abs(p.second) <= params.max_deviation; });
-    if (static_cast<int>(k - first) >= params.min_cells && length >= params.min_length && straight)
-      out.push_back({mean + along * placed[first].first, mean + along * placed[k - 1].first, false, false});
-    first = k;
+  double first = 0.0, last = 0.0;
+  for (const std::size_t i : group) {
+    const Eigen::Vector2d offset = cells[i].at - mean;
+    if (std::abs(fit.across.dot(offset)) > params.max_deviation) return std::nullopt;
+    first = std::min(first, fit.along.dot(offset));
+    last = std::max(last, fit.along.dot(offset));
   }
+  if (last - first < params.min_length) return std::nullopt;
+  return StraightSegment{mean + fit.along * first, mean + fit.along * last, false, false};
 }
 
 }  // namespace
 
 std::vector<StraightSegment> sparseSurfaces(std::span<const CellMean> cells, double cell_size,
                                             const SparseSurfaceParams& params) {
+  std::vector<CellMean> finite;
+  finite.reserve(cells.size());
+  std::copy_if(cells.begin(), cells.end(), std::back_inserter(finite),
+               [](const CellMean& c) { return std::isfinite(c.at.x()) && std::isfinite(c.at.y()); });
   std::vector<StraightSegment> out;
-  if (cells.empty()) return out;
-  const CellRaster raster(cells, cell_size);
-  std::vector<std::optional<Eigen::Vector2d>> direction(cells.size());
-  for (std::size_t i = 0; i < cells.size(); ++i)
-    if (cells[i].sparse) direction[i] = localDirection(cells, raster, i, cell_size, params);
-  for (const auto& group : joinedLines(cells, raster, direction, cell_size, params))
-    appendSurfaces(cells, group, params, out);
+  if (finite.empty()) return out;
+  const CellRaster raster(finite);
+  std::vector<std::optional<Eigen::Vector2d>> direction(finite.size());
+  for (std::size_t i = 0; i < finite.size(); ++i)
+    if (finite[i].sparse) direction[i] = localDirection(finite, raster, i, cell_size, params);
+  for (const auto& group : joinedLines(finite, raster, direction, cell_size, params))
+    if (const auto surface = fittedSurface(finite, group, params)) out.push_back(*surface);
   return out;
 }
 

@@ -108,6 +108,13 @@ double distanceToLine(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const 
   return std::abs(d.x() * (p.y() - a.y()) - d.y() * (p.x() - a.x())) / length;
 }
 
+double distanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const Eigen::Vector2d d = b - a;
+  const double length_sq = d.squaredNorm();
+  const double t = length_sq == 0.0 ? 0.0 : std::clamp((p - a).dot(d) / length_sq, 0.0, 1.0);
+  return (a + t * d - p).norm();
+}
+
 Eigen::AlignedBox2d returnBounds(std::span<const Eigen::Vector2d> points) {
   Eigen::AlignedBox2d box;  // empty
   for (const auto& p : points)

@@ -10,13 +10,6 @@ namespace scanfilter::sim {
 
 namespace {
 
-double distanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  const Eigen::Vector2d d = b - a;
-  const double length_sq = d.squaredNorm();
-  const double t = length_sq == 0.0 ? 0.0 : std::clamp((p - a).dot(d) / length_sq, 0.0, 1.0);
-  return (a + t * d - p).norm();
-}
-
 // 0 when they cross, else the distance from the nearest end to the other
 // segment.
 double distanceBetweenSegments(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,

@@ -25,7 +25,8 @@ struct FilterConfig {
   // count of other frames' returns near a point) is given for this step
   // (degrees) and scaled to the sensor's (rounded, at least 1). 0: as given.
   double free_space_veto_reference_deg = 1.0;
-  // A pane's or a mirror's returns, and the reflections that line up behind
+  // penetration_filter.surface_memory.sparse_surfaces.support_reference_deg:
+  // a pane's or a mirror's returns, and the reflections that line up behind
   // them, fill more cells the finer the step: the sparse surfaces' support
   // (min_neighbours, min_cells) is given for this step (degrees) and scaled
   // by the square root of the sensor's beams per it (rounded): a cell counts

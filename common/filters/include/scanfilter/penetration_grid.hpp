@@ -131,16 +131,21 @@ class PenetrationGrid {
   // crack, too).
   bool holdsSurfaceBetween(const Eigen::Vector2d& from, const Eigen::Vector2d& to) const;
 
-  // fn(count(c), centroid(c)) for every cell c of [lo, hi] (corners
+  // fn(c, count(c), centroid(c)) for every cell c of [lo, hi] (corners
   // included) holding points: one tile lookup per tile instead of one per
   // cell, the same values.
   template <typename Fn>
-  void forEachCountedIn(CellIndex lo, CellIndex hi, Fn&& fn) const {
-    anySlotIn(lo, hi, [&](const Tile& tile, std::size_t slot) {
-      const std::uint32_t count = tile.counts[slot];
-      if (count != 0) fn(static_cast<int>(count), Eigen::Vector2d(tile.sums[slot] / static_cast<double>(count)));
+  void forEachCountedCellIn(CellIndex lo, CellIndex hi, Fn&& fn) const {
+    anyCellIn(lo, hi, [&](const Tile& tile, CellIndex c) {
+      const std::uint32_t count = tile.counts[slot(c)];
+      if (count != 0) fn(c, static_cast<int>(count), Eigen::Vector2d(tile.sums[slot(c)] / static_cast<double>(count)));
       return false;
     });
+  }
+  // The same without the cell.
+  template <typename Fn>
+  void forEachCountedIn(CellIndex lo, CellIndex hi, Fn&& fn) const {
+    forEachCountedCellIn(lo, hi, [&](CellIndex, int count, const Eigen::Vector2d& centroid) { fn(count, centroid); });
   }
 
   std::size_t tileCount() const { return tiles_.size(); }

@@ -4,19 +4,22 @@
 
 #include <Eigen/Core>
 
+#include "scanfilter/penetration_grid.hpp"
 #include "scanfilter/straight_segments.hpp"
 
 namespace scanfilter {
 
 // How a straight surface is found among cells that each hold only a few
-// returns (docs/accuracy.md, Beyond the paper 29). The counts are for the
-// sensor's angular step (FilterConfig::resolve scales them).
+// returns (docs/accuracy.md, Beyond the paper 29). config/filter.yaml gives
+// min_neighbours and min_cells for a 1° step; FilterConfig::resolve scales
+// them to the sensor's.
 struct SparseSurfaceParams {
   bool enabled = true;
   double min_beam_surface_angle_deg = 30.0;  // the beam to a surface's middle meets it at this or more
   double neighbour_radius = 0.25;  // m, the cells within this of a cell give its local line
   int min_neighbours = 4;          // cells (itself included) a local line needs
-  double max_thickness = 0.015;    // m, σ of those cells across their line: thicker is no line
+  double max_thickness = 0.015;    // m, σ of those cells across their line: thicker is no line; a cell
+                                   // lies on a line within twice this
   double max_angle_deg = 10.0;     // degrees: neighbouring local lines this near in direction ...
   double max_gap = 0.30;           // m, ... and this near each other are one surface
   double max_deviation = 0.03;     // m, every cell of a surface lies this near its fitted line
@@ -24,9 +27,10 @@ struct SparseSurfaceParams {
   double min_length = 0.30;        // m a surface needs
 };
 
-// A cell of the cache as the mean of its returns, and whether it holds too
-// few of them to be an obstacle on its own.
+// A cell of the cache: which one, the mean of its returns, and whether it
+// holds too few of them to be an obstacle on its own.
 struct CellMean {
+  CellIndex cell;
   Eigen::Vector2d at;
   bool sparse = false;
 };
@@ -36,11 +40,12 @@ struct CellMean {
 // the beams elsewhere), so over the cache's frames its returns scatter one
 // or two to a cell along a line, below obs_th. Every cell (an obstacle too)
 // counts as a neighbour; only sparse cells make a surface. Each sparse cell
-// with enough neighbours lying thinly along a line gets that line's
-// direction; such cells join when near each other, alike in direction and on
-// each other's line; each group is fitted and split where its cells lie
-// farther apart than max_gap (a doorway, not a pane's hole). `cells` must
-// each lie in a distinct cell of width `cell_size`.
+// with enough neighbours lying thinly along a line through it gets that
+// line's direction; two such cells join when within max_gap of each other
+// (a pane's hole, not a doorway), alike in direction and each on the
+// other's line; each group long, full and straight enough is fitted as one
+// surface. Cells must be distinct; those with a non-finite mean are left
+// out.
 std::vector<StraightSegment> sparseSurfaces(std::span<const CellMean> cells, double cell_size,
                                             const SparseSurfaceParams& params);
 

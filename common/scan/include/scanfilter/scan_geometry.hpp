@@ -73,6 +73,8 @@ inline constexpr double degreesToRadians(double degrees) { return degrees * std:
 
 // Distance of p from the line through a and b (from a when they coincide).
 double distanceToLine(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
+// Distance of p from the segment a-b (from a when they coincide).
+double distanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
 
 // distanceToLine(p, a, b) > tolerance (>= 0), decided on squares: without
 // its square root and division, which the filters' per-beam tests cannot
