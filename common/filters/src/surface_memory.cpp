@@ -117,7 +117,7 @@ void SurfaceMemory::forgetSeenThroughHeadOn(std::span<const Eigen::Vector2d> poi
 SurfaceMemory::Segment SurfaceMemory::segmentBetween(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                                                      Stamp last_seen, double margin_a, double margin_b) const {
   const double length = (b - a).norm();
-  const Eigen::Vector2d unit = (b - a) / length;  // straightSegments makes none shorter than min_length > 0
+  const Eigen::Vector2d unit = (b - a) / length;  // neither finder makes one shorter than its min_length > 0
   return {a, unit, {-unit.y(), unit.x()}, length, a.cwiseMin(b), a.cwiseMax(b), last_seen, margin_a, margin_b};
 }
 

@@ -47,7 +47,9 @@ struct SurfaceMemoryParams {
 // whose returns are displaced, and no trails of mixed returns, which run
 // along the beam), across the narrow holes the frame saw through where the
 // cache holds the surface (a pane returns the beam only now and then:
-// StraightSegmentParams::max_gap). A surface seen again replaces what was
+// StraightSegmentParams::max_gap), and the lines of the cache's sparse cells
+// that PenetrationFilter finds (rememberSegments, sparse_surfaces.hpp; at
+// their own angle). A surface seen again replaces what was
 // remembered of it: the newest frame puts it where it is now (drifting
 // odometry moves old segments). Over the stretch the new frame saw, the
 // segment is as new; the remembered stretches beyond it stay, on the new
