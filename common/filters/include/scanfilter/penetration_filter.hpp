@@ -130,6 +130,8 @@ class PenetrationFilter {
   // Beyond the paper 29: the surfaces the cache holds a return at a time
   // (sparse_surfaces.hpp), into the memory, seen from `origin`.
   void rememberSparseSurfaces(const Eigen::Vector2d& origin, Stamp stamp);
+  // The cache's cells holding points within the bounds of this frame's
+  // returns and its sensor.
   std::vector<CellMean> cellsInReach(const Eigen::Vector2d& origin) const;
   // Drops the sparse cells of the surfaces `found` that a cached frame saw
   // beyond a surface of `surfaces`; whether it dropped any.
