@@ -32,12 +32,17 @@ Scan scanOf(std::vector<double> ranges) {
   return scan;
 }
 
-std::vector<int> flagged(const Scan& scan, std::size_t max_beams) {
-  const BeamMask mask = inFrontOfBothSides(scan, max_beams, kStep);
+// The beams standing in front in the way asked (by default of both sides).
+std::vector<int> flagged(const Scan& scan, std::size_t max_beams, StandsInFront how = StandsInFront::kOfBothSides) {
+  const std::vector<StandsInFront> stands = standingInFront(scan, max_beams, kStep);
   std::vector<int> out;
   for (std::size_t i = 0; i < scan.size(); ++i)
-    if (mask[i]) out.push_back(static_cast<int>(i));
+    if (stands[i] == how) out.push_back(static_cast<int>(i));
   return out;
+}
+
+std::vector<int> besideANoReturn(const Scan& scan, std::size_t max_beams) {
+  return flagged(scan, max_beams, StandsInFront::kBesideANoReturn);
 }
 
 TEST(InFrontOfBothSides, ShortStretchesWithFartherReturnsOnBothSides) {
@@ -76,10 +81,31 @@ TEST(InFrontOfBothSides, NotBetweenNotNearNotBesideNothing) {
   EXPECT_EQ(flagged(scanOf({1, 1, 2, 3, 3}), 2), (std::vector<int>{})) << "between an edge and its background";
   EXPECT_EQ(flagged(scanOf({3, 3, 2.9, 3, 3}), 2), (std::vector<int>{})) << "within the depth step: noise";
   EXPECT_EQ(flagged(scanOf({3, 3, 1, kNaN, 3}), 2), (std::vector<int>{}))
-      << "nothing within range on one side: no background light to mix";
+      << "nothing within range on one side: no background light to mix there";
   EXPECT_EQ(flagged(scanOf({3, kNaN, 1, 3, 3}), 2), (std::vector<int>{})) << "nor on the other";
   EXPECT_EQ(flagged(scanOf({1, 3, 3, 3, 1}), 2), (std::vector<int>{})) << "at the scan's ends one side is unknown";
   EXPECT_EQ(flagged(scanOf({3, 3, 4, 3, 3}), 2), (std::vector<int>{})) << "behind both sides is no thin object";
+}
+
+// Beside a beam without a return the stretch is told apart: its mix needs a
+// second object behind it (Beyond the paper 30).
+TEST(InFrontOfBothSides, BesideABeamWithoutAReturn) {
+  EXPECT_EQ(besideANoReturn(scanOf({3, 3, 1, kNaN, 3}), 2), (std::vector<int>{2}));
+  EXPECT_EQ(besideANoReturn(scanOf({3, kNaN, 1, 3, 3}), 2), (std::vector<int>{2}));
+  EXPECT_EQ(besideANoReturn(scanOf({3, kNaN, 1, kNaN, 3}), 2), (std::vector<int>{2})) << "on both sides";
+  EXPECT_EQ(besideANoReturn(scanOf({3, kNaN, 1, 1.1, 3}), 2), (std::vector<int>{2, 3})) << "two returns of one object";
+  EXPECT_EQ(besideANoReturn(scanOf({3, kNaN, 1, 1.1, 1.0, 3}), 2), (std::vector<int>{}))
+      << "three: longer than max_beams";
+  EXPECT_EQ(besideANoReturn(scanOf({3, 3, 1, 1.05, kNaN, 3}), 2), (std::vector<int>{2, 3}));
+  EXPECT_EQ(besideANoReturn(scanOf({kNaN, 3, 3, 1, 1.05}), 2), (std::vector<int>{}))
+      << "at a partial scan's end one side is unknown";
+  EXPECT_EQ(besideANoReturn(scanOf({3, kNaN, 3, 3, 3}), 2), (std::vector<int>{})) << "a wall going on is no stretch";
+  // The leg at 1 m with the mix of it and the wall at 2 m beside it, a beam
+  // without a return beyond: the leg stands in front of both sides in the
+  // shorter stretch, which wins.
+  const Scan leg_and_mix = scanOf({3, 3, 1, 2, kNaN, 3});
+  EXPECT_EQ(flagged(leg_and_mix, 2), (std::vector<int>{2}));
+  EXPECT_EQ(besideANoReturn(leg_and_mix, 2), (std::vector<int>{3}));
 }
 
 TEST(ThinObjectCheck, AnObjectInTheFootprintInFrontOfTheReturn) {
@@ -98,6 +124,22 @@ TEST(ThinObjectCheck, AnObjectInTheFootprintInFrontOfTheReturn) {
   EXPECT_FALSE(check.inFootprintInFront(origin, p, {3.5, 0}, step)) << "behind p";
   EXPECT_FALSE(check.inFootprintInFront(origin, p, {-1, 0}, step)) << "behind the sensor";
   EXPECT_FALSE(check.inFootprintInFront(origin, origin, {1, 0}, step)) << "no beam";
+}
+
+TEST(ThinObjectCheck, AnObjectInTheFootprintBehindTheReturn) {
+  const ThinObjectCheck check(kStep, 0.02);
+  const double step = 1.0 * kDeg;
+  const double reach = 6.0;  // the sensor's range
+  const Eigen::Vector2d origin(0, 0), p(3, 0);
+  const double half_width = check.halfWidthAt(4.0, step);
+  EXPECT_TRUE(check.inFootprintBehind(origin, p, {4, 0}, step, reach));
+  EXPECT_TRUE(check.inFootprintBehind(origin, p, {4, half_width - 1e-4}, step, reach));
+  EXPECT_FALSE(check.inFootprintBehind(origin, p, {4, half_width + 1e-4}, step, reach)) << "beside the footprint";
+  EXPECT_TRUE(check.inFootprintBehind(origin, p, {3.2, 0}, step, reach));
+  EXPECT_FALSE(check.inFootprintBehind(origin, p, {3.1, 0}, step, reach)) << "within the depth step: p's own object";
+  EXPECT_FALSE(check.inFootprintBehind(origin, p, {2, 0}, step, reach)) << "in front of p";
+  EXPECT_FALSE(check.inFootprintBehind(origin, p, {6.5, 0}, step, reach)) << "beyond the sensor's range";
+  EXPECT_FALSE(check.inFootprintBehind(origin, origin, {1, 0}, step, reach)) << "no beam";
 }
 
 // Step 2 on a room with a leg of 1 cm radius about 1 m ahead (one or two beams
@@ -120,15 +162,18 @@ struct LegScene {
   // return at its centre (before the warm-up, so they all stay valid), the
   // cell's whole count.
   int leg_returns = 0;
+  // false: the room has no wall behind the leg (x = 3), so the beams beside
+  // the last frame's return reach nothing (Beyond the paper 30).
+  bool wall_behind = true;
+  // Not 0: a second leg stands this far past the last frame's return, on
+  // its beam, in every frame but the last.
+  double rear_leg_beyond = 0.0;  // m
 };
 
 std::uint8_t legBeamLabel(const PenetrationFilterParams& p, const LegScene& scene) {
   const SensorInfo sensor = test::simpleSensor();
-  const World room = World{}
-                         .wall({3, -3}, {3, 3})
-                         .wall({-3, -3}, {3, -3})
-                         .wall({-3, 3}, {3, 3})
-                         .wall({-3, -3}, {-3, 3});
+  World room = World{}.wall({-3, -3}, {3, -3}).wall({-3, 3}, {3, 3}).wall({-3, -3}, {-3, 3});
+  if (scene.wall_behind) room.wall({3, -3}, {3, 3});
   World with_leg = room;
   // Inside one 5 cm cell: a leg across a cell corner fills two cells either
   // side of the beam, which step 2's own rule reads as a surface crossed.
@@ -142,6 +187,8 @@ std::uint8_t legBeamLabel(const PenetrationFilterParams& p, const LegScene& scen
   const Eigen::Vector2d last_at(0.0, poseOf(kFrames - 1).y);
   const Eigen::Vector2d return_at =
       last_at + (leg - last_at).normalized() * ((leg - last_at).norm() - kLegRadius + scene.beyond_leg);
+  if (scene.rear_leg_beyond > 0.0)
+    with_leg.leg(return_at + (leg - last_at).normalized() * (scene.rear_leg_beyond + kLegRadius), kLegRadius);
   if (scene.earlier_there > 0) {
     EXPECT_GE(poseOf(kFrames - 1).y - poseOf(scene.earlier_there - 1).y, p.rescue_min_baseline);
   }
@@ -197,6 +244,25 @@ TEST(ThinObjectCheck, StepTwoRemovesTheMixedReturnBehindALeg) {
   PenetrationFilterParams off = p;
   off.thin_object_check = false;
   EXPECT_EQ(legBeamLabel(off, {}), kValid) << "the paper's step 2 keeps it";
+}
+
+// With no return beside it (nothing within range behind), a return behind a
+// cached leg is a mix only of that leg and a second object behind it in the
+// footprint, seen in the cache: a chair's front and rear legs. With nothing
+// behind it the return is the object's own (Beyond the paper 30).
+TEST(ThinObjectCheck, BesideANoReturnAMixNeedsASecondObjectBehind) {
+  const PenetrationFilterParams p = thinObjectsOnly();
+  ASSERT_TRUE(p.thin_object_beside_no_return);
+  EXPECT_EQ(legBeamLabel(p, {.wall_behind = false, .rear_leg_beyond = 0.5}), kJump)
+      << "a rear leg 0.5 m behind it in the footprint";
+  EXPECT_EQ(legBeamLabel(p, {.wall_behind = false}), kValid) << "nothing behind it within range";
+  EXPECT_EQ(legBeamLabel(p, {.wall_behind = false, .rear_leg_beyond = 0.1}), kValid)
+      << "10 cm behind it: within the depth step, the return's own object";
+
+  PenetrationFilterParams off = p;
+  off.thin_object_beside_no_return = false;
+  EXPECT_EQ(legBeamLabel(off, {.wall_behind = false, .rear_leg_beyond = 0.5}), kValid)
+      << "such stretches not checked";
 }
 
 // Returns from elsewhere where the return lies (as many as the rescue needs

@@ -280,7 +280,7 @@ PenetrationFilter::Judgement PenetrationFilter::alignAndJudge(const Scan& scan, 
   findSurfaceEnds(scan);
   judgePoints(origin, labels);
   if (params_.free_space_check) markSeenThrough(scan, origin, labels);
-  if (params_.thin_object_check) markMixedReturnsOfThinObjects(scan, origin, labels);
+  if (params_.thin_object_check) markMixedReturnsOfThinObjects(scan, origin, sensor.range_max, labels);
   if (memory_.enabled()) markBeyondRememberedSurfaces(scan.stamp, origin, labels);
   out.judged = true;
   out.origin = origin;
@@ -429,32 +429,41 @@ void PenetrationFilter::markSeenThrough(const Scan& scan, const Eigen::Vector2d&
 }
 
 void PenetrationFilter::markMixedReturnsOfThinObjects(const Scan& scan, const Eigen::Vector2d& origin,
-                                                      std::span<std::uint8_t> labels) const {
-  const BeamMask in_front = inFrontOfBothSides(
+                                                      double range_max, std::span<std::uint8_t> labels) const {
+  const std::vector<StandsInFront> in_front = standingInFront(
       scan, static_cast<std::size_t>(std::max(0, params_.thin_object_max_beams)), params_.edge_depth_step);
   const double angle_step = scan.angle_increment;
   for (std::size_t i = 0; i < labels.size(); ++i) {
-    if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid) || !in_front[i]) continue;
+    if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid) || in_front[i] == StandsInFront::kNo) continue;
+    const bool beside_no_return = in_front[i] == StandsInFront::kBesideANoReturn;
+    if (beside_no_return && !params_.thin_object_beside_no_return) continue;
     // A return the rescue would restore (its evidence: returns of frames
     // taken rescue_min_baseline away, or of all while none is) is an object
     // there: the rear leg of a chair, partly behind a front one.
     if (params_.rescue_persistent_points && evidenceAround(points_[i]) >= params_.rescue_min_count) continue;
-    if (objectInFootprint(origin, points_[i], angle_step)) labels[i] = static_cast<std::uint8_t>(PointCode::kJump);
+    if (!objectInFootprint(origin, points_[i], angle_step, AlongTheBeam::kInFront, range_max)) continue;
+    // With nothing within range beside it, the rest of the footprint found
+    // no background there: a mix needs a second object behind the return.
+    if (beside_no_return && !objectInFootprint(origin, points_[i], angle_step, AlongTheBeam::kBehind, range_max))
+      continue;
+    labels[i] = static_cast<std::uint8_t>(PointCode::kJump);
   }
 }
 
 bool PenetrationFilter::objectInFootprint(const Eigen::Vector2d& origin, const Eigen::Vector2d& p,
-                                          double angle_step) const {
+                                          double angle_step, AlongTheBeam where, double range_max) const {
   // Stretch by stretch along the beam, each boxed with the footprint's width
   // there: the cells visited follow the beam, not the box around all of it.
   constexpr double kStretch = 0.5;  // m, ten cells of 5 cm
   const Eigen::Vector2d beam = p - origin;
   const double length = beam.norm();
-  const double reach = length - thin_objects_.depthStep();
-  if (!(reach > 0.0)) return false;
+  if (!(length > 0.0)) return false;
+  const bool in_front = where == AlongTheBeam::kInFront;
+  const double start = in_front ? 0.0 : length + thin_objects_.depthStep();
+  const double end = in_front ? length - thin_objects_.depthStep() : range_max;
   const Eigen::Vector2d unit = beam / length;
-  for (double from = 0.0; from < reach; from += kStretch) {
-    const double to = std::min(reach, from + kStretch);
+  for (double from = start; from < end; from += kStretch) {
+    const double to = std::min(end, from + kStretch);
     const Eigen::Vector2d a = origin + unit * from;
     const Eigen::Vector2d b = origin + unit * to;
     // A cell's position lies in the cell, so the cells of the box hold every
@@ -466,7 +475,9 @@ bool PenetrationFilter::objectInFootprint(const Eigen::Vector2d& origin, const E
         grid_.cellOf(a.cwiseMin(b).array() - pad), grid_.cellOf(a.cwiseMax(b).array() + pad),
         params_.obstacle_threshold, [&](CellIndex c) {
           const Eigen::Vector2d q = obstaclePosition(c);
-          return countsAsObstacle(q) && thin_objects_.inFootprintInFront(origin, p, q, angle_step);
+          if (!countsAsObstacle(q)) return false;
+          return in_front ? thin_objects_.inFootprintInFront(origin, p, q, angle_step)
+                          : thin_objects_.inFootprintBehind(origin, p, q, angle_step, range_max);
         });
     if (found) return true;
   }

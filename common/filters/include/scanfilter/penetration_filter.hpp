@@ -174,13 +174,17 @@ class PenetrationFilter {
   void markSeenThrough(const Scan& scan, const Eigen::Vector2d& origin, std::span<std::uint8_t> labels);
   // thin_object_check: kept returns standing in front of both sides with a
   // cached object in their footprint, in front of them, become jump points
-  // (points_ and `origin` placed as judged).
-  void markMixedReturnsOfThinObjects(const Scan& scan, const Eigen::Vector2d& origin,
+  // (points_ and `origin` placed as judged); beside a beam without a return
+  // (thin_object_beside_no_return) only with a second one behind them,
+  // within `range_max` of the sensor.
+  void markMixedReturnsOfThinObjects(const Scan& scan, const Eigen::Vector2d& origin, double range_max,
                                      std::span<std::uint8_t> labels) const;
+  enum class AlongTheBeam { kInFront, kBehind };
   // Whether a cell holding obs_th returns (outside the frame's edge fringes)
   // puts an object in the footprint of the beam from `origin` to p, in front
-  // of p.
-  bool objectInFootprint(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, double angle_step) const;
+  // of p or behind it (within `range_max` of the sensor).
+  bool objectInFootprint(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, double angle_step,
+                         AlongTheBeam where, double range_max) const;
   // surface_memory: kept returns beyond a remembered surface become
   // misdetected (points_ and `origin` placed as judged).
   void markBeyondRememberedSurfaces(Stamp stamp, const Eigen::Vector2d& origin,

@@ -1,9 +1,10 @@
 #pragma once
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 #include <Eigen/Core>
 
-#include "scanfilter/beam_mask.hpp"
 #include "scanfilter/scan.hpp"
 
 namespace scanfilter {
@@ -45,26 +46,47 @@ class ThinObjectCheck {
   // of the beam to p, in front of p by more than the depth step.
   bool inFootprintInFront(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, const Eigen::Vector2d& q,
                           double angle_step) const;
+  // Whether it lies in that footprint behind p by more than the depth step,
+  // and no farther than `reach` from the sensor (the sensor's range: the
+  // light of anything beyond is too weak to pull a range back).
+  bool inFootprintBehind(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, const Eigen::Vector2d& q,
+                         double angle_step, double reach) const;
 
-  // How far short of p along its beam an object must end: the walk's reach.
+  // How far short of p (or past it) along its beam an object must lie.
   double depthStep() const { return depth_step_; }
 
  private:
+  // How far q lies along the beam from `origin` through `unit`, when it lies
+  // within the footprint there; a negative value when it does not.
+  double alongInFootprint(const Eigen::Vector2d& origin, const Eigen::Vector2d& unit, const Eigen::Vector2d& q,
+                          double angle_step) const;
+
   double depth_step_;     // m
   double object_radius_;  // m
 };
 
-// Returns standing in front of both sides: every stretch of at most
-// `max_beams` returns whose neighbouring beams on both sides return farther
-// than the stretch's farthest return by more than `depth_step`. The
-// stretch holds a thin object's own returns and its mixed ones beside them
-// (the leg at 1 m and, next to it, a mix of the leg and the wall behind at
-// 2 m: both stand in front of the wall on either side). A wall's end is no
-// such stretch: the wall goes on for more than a few beams. A neighbour
-// without a return does not count as farther: with nothing within range
-// behind the object, no background light pulls the range back, so the return
-// is the object's own. On a full turn stretches run across the seam; on a
-// partial one a stretch at either end is not flagged (one side is unknown).
-BeamMask inFrontOfBothSides(const Scan& scan, std::size_t max_beams, double depth_step);
+// How a return stands against the beams beside the stretch it belongs to.
+enum class StandsInFront : std::uint8_t {
+  kNo,
+  // Both beams beside it return farther: the background the footprint's
+  // rest fell on is there, on either side.
+  kOfBothSides,
+  // One of them or both return nothing (the other farther): no background
+  // within range there, so a mixed return needs a second object in the
+  // footprint, behind the return (a chair's rear leg behind its front one).
+  kBesideANoReturn,
+};
+
+// Returns standing in front: every stretch of at most `max_beams` returns
+// whose neighbouring beams on both sides return farther than the stretch's
+// farthest return by more than `depth_step`, or nothing. The stretch holds
+// a thin object's own returns and its mixed ones beside them (the leg at
+// 1 m and, next to it, a mix of the leg and the wall behind at 2 m: both
+// stand in front of the wall on either side). A wall's end is no such
+// stretch: the wall goes on for more than a few beams. A return in stretches
+// of both kinds is kOfBothSides. On a full turn stretches run across the
+// seam; on a partial one a stretch at either end is not flagged (one side is
+// unknown).
+std::vector<StandsInFront> standingInFront(const Scan& scan, std::size_t max_beams, double depth_step);
 
 }  // namespace scanfilter
