@@ -168,6 +168,9 @@ struct LegScene {
   // Not 0: a second leg stands this far past the last frame's return, on
   // its beam, in every frame but the last.
   double rear_leg_beyond = 0.0;  // m
+  // Not 0: that leg is no solid; the first this many frames each have one
+  // return at its centre (before the warm-up, so they all stay valid).
+  int rear_leg_returns = 0;
 };
 
 std::uint8_t legBeamLabel(const PenetrationFilterParams& p, const LegScene& scene) {
@@ -187,12 +190,13 @@ std::uint8_t legBeamLabel(const PenetrationFilterParams& p, const LegScene& scen
   const Eigen::Vector2d last_at(0.0, poseOf(kFrames - 1).y);
   const Eigen::Vector2d return_at =
       last_at + (leg - last_at).normalized() * ((leg - last_at).norm() - kLegRadius + scene.beyond_leg);
-  if (scene.rear_leg_beyond > 0.0)
-    with_leg.leg(return_at + (leg - last_at).normalized() * (scene.rear_leg_beyond + kLegRadius), kLegRadius);
+  const Eigen::Vector2d rear_leg = return_at + (leg - last_at).normalized() * (scene.rear_leg_beyond + kLegRadius);
+  if (scene.rear_leg_beyond > 0.0 && scene.rear_leg_returns == 0) with_leg.leg(rear_leg, kLegRadius);
   if (scene.earlier_there > 0) {
     EXPECT_GE(poseOf(kFrames - 1).y - poseOf(scene.earlier_there - 1).y, p.rescue_min_baseline);
   }
   EXPECT_LT(scene.leg_returns, p.min_frames) << "the leg's returns must come before the warm-up ends";
+  EXPECT_LT(scene.rear_leg_returns, p.min_frames) << "so must the rear leg's";
   std::uint8_t out = 0;
   for (int k = 0; k < kFrames; ++k) {
     const Pose2 pose = poseOf(k);
@@ -201,6 +205,10 @@ std::uint8_t legBeamLabel(const PenetrationFilterParams& p, const LegScene& scen
     Scan scan = castScan(last || scene.leg_returns > 0 ? room : with_leg, pose, sensor, 360, 0.1 * k);
     const std::size_t leg_beam = test::beamTowards(scan, sensor, std::atan2(leg.y() - pose.y, leg.x()));
     if (k < scene.leg_returns) scan.ranges[leg_beam] = (leg - sensor_at).norm();
+    if (k < scene.rear_leg_returns) {
+      const Eigen::Vector2d to = rear_leg - sensor_at;
+      scan.ranges[test::beamTowards(scan, sensor, std::atan2(to.y(), to.x()))] = to.norm();
+    }
     if (k < scene.earlier_there) {
       const Eigen::Vector2d to = return_at - sensor_at;
       scan.ranges[test::beamTowards(scan, sensor, std::atan2(to.y(), to.x()))] = to.norm();
@@ -258,6 +266,12 @@ TEST(ThinObjectCheck, BesideANoReturnAMixNeedsASecondObjectBehind) {
   EXPECT_EQ(legBeamLabel(p, {.wall_behind = false}), kValid) << "nothing behind it within range";
   EXPECT_EQ(legBeamLabel(p, {.wall_behind = false, .rear_leg_beyond = 0.1}), kValid)
       << "10 cm behind it: within the depth step, the return's own object";
+  // Behind, an obstacle is needed (more than obs_th cached returns, 2 at 1°).
+  ASSERT_EQ(p.obstacle_threshold, 2);
+  EXPECT_EQ(legBeamLabel(p, {.wall_behind = false, .rear_leg_beyond = 0.5, .rear_leg_returns = 3}), kJump)
+      << "three cached returns at the rear leg: an obstacle";
+  EXPECT_EQ(legBeamLabel(p, {.wall_behind = false, .rear_leg_beyond = 0.5, .rear_leg_returns = 2}), kValid)
+      << "two are not";
 
   PenetrationFilterParams off = p;
   off.thin_object_beside_no_return = false;

@@ -462,6 +462,11 @@ bool PenetrationFilter::objectInFootprint(const Eigen::Vector2d& origin, const E
   const double start = in_front ? 0.0 : length + thin_objects_.depthStep();
   const double end = in_front ? length - thin_objects_.depthStep() : range_max;
   const Eigen::Vector2d unit = beam / length;
+  // In front, cells holding obs_th returns count, one fewer than an obstacle
+  // needs: most of a thin leg's returns are mixed and land elsewhere. Behind,
+  // an obstacle is needed: with obs_th returns, the thin legs seen past
+  // another near the range's end were lost (docs/accuracy.md, 30).
+  const int least = in_front ? params_.obstacle_threshold : params_.obstacle_threshold + 1;
   for (double from = start; from < end; from += kStretch) {
     const double to = std::min(end, from + kStretch);
     const Eigen::Vector2d a = origin + unit * from;
@@ -469,11 +474,8 @@ bool PenetrationFilter::objectInFootprint(const Eigen::Vector2d& origin, const E
     // A cell's position lies in the cell, so the cells of the box hold every
     // position within it.
     const double pad = thin_objects_.halfWidthAt(to, angle_step);
-    // Cells holding obs_th returns count, one fewer than an obstacle needs:
-    // most of a thin leg's returns are mixed and land elsewhere.
     const bool found = grid_.anyCellHoldingIn(
-        grid_.cellOf(a.cwiseMin(b).array() - pad), grid_.cellOf(a.cwiseMax(b).array() + pad),
-        params_.obstacle_threshold, [&](CellIndex c) {
+        grid_.cellOf(a.cwiseMin(b).array() - pad), grid_.cellOf(a.cwiseMax(b).array() + pad), least, [&](CellIndex c) {
           const Eigen::Vector2d q = obstaclePosition(c);
           if (!countsAsObstacle(q)) return false;
           return in_front ? thin_objects_.inFootprintInFront(origin, p, q, angle_step)

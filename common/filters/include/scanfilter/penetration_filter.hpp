@@ -180,9 +180,10 @@ class PenetrationFilter {
   void markMixedReturnsOfThinObjects(const Scan& scan, const Eigen::Vector2d& origin, double range_max,
                                      std::span<std::uint8_t> labels) const;
   enum class AlongTheBeam { kInFront, kBehind };
-  // Whether a cell holding obs_th returns (outside the frame's edge fringes)
-  // puts an object in the footprint of the beam from `origin` to p, in front
-  // of p or behind it (within `range_max` of the sensor).
+  // Whether a cell holding obs_th returns in front of p, or an obstacle cell
+  // (more than obs_th) behind it within `range_max` of the sensor, outside
+  // the frame's edge fringes, puts an object in the footprint of the beam
+  // from `origin` to p.
   bool objectInFootprint(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, double angle_step,
                          AlongTheBeam where, double range_max) const;
   // surface_memory: kept returns beyond a remembered surface become

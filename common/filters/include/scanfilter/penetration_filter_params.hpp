@@ -141,8 +141,8 @@ struct PenetrationFilterParams {
   int thin_object_max_beams = 3;
   double thin_object_radius = 0.02;  // m
   // Beyond the paper 30: a stretch beside a beam without a return counts too,
-  // when a second cached object lies in the footprint behind the return
-  // (within the sensor's range): with no background within range there, a
+  // when a second cached object (an obstacle cell: more than obs_th returns)
+  // lies in the footprint behind the return (within the sensor's range): with no background within range there, a
   // mixed return is a mix of two objects, a chair's front and rear legs.
   // false: such stretches are never marked.
   bool thin_object_beside_no_return = true;
