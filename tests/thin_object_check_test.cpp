@@ -42,7 +42,7 @@ std::vector<int> flagged(const Scan& scan, std::size_t max_beams, StandsInFront 
 }
 
 std::vector<int> besideANoReturn(const Scan& scan, std::size_t max_beams) {
-  return flagged(scan, max_beams, StandsInFront::kBesideANoReturn);
+  return flagged(scan, max_beams, StandsInFront::kBesideNoReturn);
 }
 
 TEST(InFrontOfBothSides, ShortStretchesWithFartherReturnsOnBothSides) {
@@ -267,10 +267,12 @@ TEST(ThinObjectCheck, BesideANoReturnAMixNeedsASecondObjectBehind) {
   EXPECT_EQ(legBeamLabel(p, {.wall_behind = false, .rear_leg_beyond = 0.1}), kValid)
       << "10 cm behind it: within the depth step, the return's own object";
   // Behind, an obstacle is needed (more than obs_th cached returns, 2 at 1°).
+  // 0.54 m puts the rear leg's returns from the first frames well inside one
+  // 5 cm cell (1.5 cm or more from its edges).
   ASSERT_EQ(p.obstacle_threshold, 2);
-  EXPECT_EQ(legBeamLabel(p, {.wall_behind = false, .rear_leg_beyond = 0.5, .rear_leg_returns = 3}), kJump)
+  EXPECT_EQ(legBeamLabel(p, {.wall_behind = false, .rear_leg_beyond = 0.54, .rear_leg_returns = 3}), kJump)
       << "three cached returns at the rear leg: an obstacle";
-  EXPECT_EQ(legBeamLabel(p, {.wall_behind = false, .rear_leg_beyond = 0.5, .rear_leg_returns = 2}), kValid)
+  EXPECT_EQ(legBeamLabel(p, {.wall_behind = false, .rear_leg_beyond = 0.54, .rear_leg_returns = 2}), kValid)
       << "two are not";
 
   PenetrationFilterParams off = p;

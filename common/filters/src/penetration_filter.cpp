@@ -430,60 +430,72 @@ void PenetrationFilter::markSeenThrough(const Scan& scan, const Eigen::Vector2d&
 
 void PenetrationFilter::markMixedReturnsOfThinObjects(const Scan& scan, const Eigen::Vector2d& origin,
                                                       double range_max, std::span<std::uint8_t> labels) const {
-  const std::vector<StandsInFront> in_front = standingInFront(
+  const std::vector<StandsInFront> stands = standingInFront(
       scan, static_cast<std::size_t>(std::max(0, params_.thin_object_max_beams)), params_.edge_depth_step);
   const double angle_step = scan.angle_increment;
   for (std::size_t i = 0; i < labels.size(); ++i) {
-    if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid) || in_front[i] == StandsInFront::kNo) continue;
-    const bool beside_no_return = in_front[i] == StandsInFront::kBesideANoReturn;
+    if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid) || stands[i] == StandsInFront::kNo) continue;
+    const bool beside_no_return = stands[i] == StandsInFront::kBesideNoReturn;
     if (beside_no_return && !params_.thin_object_beside_no_return) continue;
     // A return the rescue would restore (its evidence: returns of frames
     // taken rescue_min_baseline away, or of all while none is) is an object
     // there: the rear leg of a chair, partly behind a front one.
     if (params_.rescue_persistent_points && evidenceAround(points_[i]) >= params_.rescue_min_count) continue;
-    if (!objectInFootprint(origin, points_[i], angle_step, AlongTheBeam::kInFront, range_max)) continue;
+    if (!objectInFootprint(origin, points_[i], angle_step)) continue;
     // With nothing within range beside it, the rest of the footprint found
     // no background there: a mix needs a second object behind the return.
-    if (beside_no_return && !objectInFootprint(origin, points_[i], angle_step, AlongTheBeam::kBehind, range_max))
-      continue;
+    if (beside_no_return && !obstacleBehindInFootprint(origin, points_[i], angle_step, range_max)) continue;
     labels[i] = static_cast<std::uint8_t>(PointCode::kJump);
   }
 }
 
-bool PenetrationFilter::objectInFootprint(const Eigen::Vector2d& origin, const Eigen::Vector2d& p,
-                                          double angle_step, AlongTheBeam where, double range_max) const {
+template <typename Pred>
+bool PenetrationFilter::anyCellAlongBeam(const Eigen::Vector2d& origin, const Eigen::Vector2d& unit, double from,
+                                         double to, double angle_step, int least, Pred&& pred) const {
   // Stretch by stretch along the beam, each boxed with the footprint's width
   // there: the cells visited follow the beam, not the box around all of it.
   constexpr double kStretch = 0.5;  // m, ten cells of 5 cm
-  const Eigen::Vector2d beam = p - origin;
-  const double length = beam.norm();
-  if (!(length > 0.0)) return false;
-  const bool in_front = where == AlongTheBeam::kInFront;
-  const double start = in_front ? 0.0 : length + thin_objects_.depthStep();
-  const double end = in_front ? length - thin_objects_.depthStep() : range_max;
-  const Eigen::Vector2d unit = beam / length;
-  // In front, cells holding obs_th returns count, one fewer than an obstacle
-  // needs: most of a thin leg's returns are mixed and land elsewhere. Behind,
-  // an obstacle is needed: with obs_th returns, the thin legs seen past
-  // another near the range's end were lost (docs/accuracy.md, 30).
-  const int least = in_front ? params_.obstacle_threshold : params_.obstacle_threshold + 1;
-  for (double from = start; from < end; from += kStretch) {
-    const double to = std::min(end, from + kStretch);
-    const Eigen::Vector2d a = origin + unit * from;
-    const Eigen::Vector2d b = origin + unit * to;
+  for (double near = from; near < to; near += kStretch) {
+    const double far = std::min(to, near + kStretch);
+    const Eigen::Vector2d a = origin + unit * near;
+    const Eigen::Vector2d b = origin + unit * far;
     // A cell's position lies in the cell, so the cells of the box hold every
     // position within it.
-    const double pad = thin_objects_.halfWidthAt(to, angle_step);
-    const bool found = grid_.anyCellHoldingIn(
-        grid_.cellOf(a.cwiseMin(b).array() - pad), grid_.cellOf(a.cwiseMax(b).array() + pad), least, [&](CellIndex c) {
-          const Eigen::Vector2d q = obstaclePosition(c);
-          if (!countsAsObstacle(q)) return false;
-          return in_front ? thin_objects_.inFootprintInFront(origin, p, q, angle_step)
-                          : thin_objects_.inFootprintBehind(origin, p, q, angle_step, range_max);
-        });
+    const double pad = thin_objects_.halfWidthAt(far, angle_step);
+    const bool found = grid_.anyCellHoldingIn(grid_.cellOf(a.cwiseMin(b).array() - pad),
+                                              grid_.cellOf(a.cwiseMax(b).array() + pad), least, [&](CellIndex c) {
+                                                const Eigen::Vector2d q = obstaclePosition(c);
+                                                return countsAsObstacle(q) && pred(q);
+                                              });
     if (found) return true;
   }
   return false;
+}
+
+bool PenetrationFilter::objectInFootprint(const Eigen::Vector2d& origin, const Eigen::Vector2d& p,
+                                          double angle_step) const {
+  const double length = (p - origin).norm();
+  if (!(length > 0.0)) return false;
+  // Cells holding obs_th returns count, one fewer than an obstacle needs:
+  // most of a thin leg's returns are mixed and land elsewhere.
+  return anyCellAlongBeam(origin, (p - origin) / length, 0.0, length - thin_objects_.depthStep(), angle_step,
+                          params_.obstacle_threshold, [&](const Eigen::Vector2d& q) {
+                            return thin_objects_.inFootprintInFront(origin, p, q, angle_step);
+                          });
+}
+
+bool PenetrationFilter::obstacleBehindInFootprint(const Eigen::Vector2d& origin, const Eigen::Vector2d& p,
+                                                  double angle_step, double range_max) const {
+  const double length = (p - origin).norm();
+  // A sensor without a finite range gives no end to the walk: nothing is sought.
+  if (!(length > 0.0) || !std::isfinite(range_max)) return false;
+  // An obstacle (more than obs_th returns), not the weaker cells in front:
+  // with those, thin legs seen past another near the range's end were lost
+  // (docs/accuracy.md, 30).
+  return anyCellAlongBeam(origin, (p - origin) / length, length + thin_objects_.depthStep(), range_max, angle_step,
+                          params_.obstacle_threshold + 1, [&](const Eigen::Vector2d& q) {
+                            return thin_objects_.inFootprintBehind(origin, p, q, angle_step, range_max);
+                          });
 }
 
 void PenetrationFilter::markBeyondRememberedSurfaces(Stamp stamp, const Eigen::Vector2d& origin,

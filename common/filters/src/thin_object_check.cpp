@@ -7,28 +7,31 @@
 
 namespace scanfilter {
 
-double ThinObjectCheck::alongInFootprint(const Eigen::Vector2d& origin, const Eigen::Vector2d& unit,
-                                         const Eigen::Vector2d& q, double angle_step) const {
+std::optional<ThinObjectCheck::AlongBeam> ThinObjectCheck::alongInFootprint(const Eigen::Vector2d& origin,
+                                                                             const Eigen::Vector2d& p,
+                                                                             const Eigen::Vector2d& q,
+                                                                             double angle_step) const {
+  const Eigen::Vector2d beam = p - origin;
+  const double length = beam.norm();
+  if (!(length > 0.0)) return std::nullopt;  // no beam
+  const Eigen::Vector2d unit = beam / length;
   const Eigen::Vector2d w = q - origin;
   const double along = w.dot(unit);
-  if (along <= 0.0) return -1.0;  // behind the sensor
-  return std::abs(cross(unit, w)) <= halfWidthAt(along, angle_step) ? along : -1.0;
+  if (along <= 0.0) return std::nullopt;  // behind the sensor
+  if (std::abs(cross(unit, w)) > halfWidthAt(along, angle_step)) return std::nullopt;
+  return AlongBeam{along, length};
 }
 
 bool ThinObjectCheck::inFootprintInFront(const Eigen::Vector2d& origin, const Eigen::Vector2d& p,
                                          const Eigen::Vector2d& q, double angle_step) const {
-  const double length = (p - origin).norm();
-  if (!(length > 0.0)) return false;
-  const double along = alongInFootprint(origin, (p - origin) / length, q, angle_step);
-  return along > 0.0 && along <= length - depth_step_;
+  const auto at = alongInFootprint(origin, p, q, angle_step);
+  return at && at->along <= at->length - depth_step_;
 }
 
 bool ThinObjectCheck::inFootprintBehind(const Eigen::Vector2d& origin, const Eigen::Vector2d& p,
                                         const Eigen::Vector2d& q, double angle_step, double reach) const {
-  const double length = (p - origin).norm();
-  if (!(length > 0.0)) return false;
-  const double along = alongInFootprint(origin, (p - origin) / length, q, angle_step);
-  return along >= length + depth_step_ && along <= reach;
+  const auto at = alongInFootprint(origin, p, q, angle_step);
+  return at && at->along >= at->length + depth_step_ && at->along <= reach;
 }
 
 std::vector<StandsInFront> standingInFront(const Scan& scan, std::size_t max_beams, double depth_step) {
@@ -55,10 +58,11 @@ std::vector<StandsInFront> standingInFront(const Scan& scan, std::size_t max_bea
       const std::size_t after = (a + length) % n;
       const bool open_after = !scan.hasReturn(after);
       if (!open_after && scan.ranges[after] <= beyond) continue;
-      const StandsInFront how = open_before || open_after ? StandsInFront::kBesideANoReturn : StandsInFront::kOfBothSides;
+      const StandsInFront how =
+          open_before || open_after ? StandsInFront::kBesideNoReturn : StandsInFront::kOfBothSides;
       for (std::size_t k = 0; k < length; ++k) {
-        StandsInFront& beam = out[(a + k) % n];
-        if (beam != StandsInFront::kOfBothSides) beam = how;  // both sides farther is the stronger claim
+        StandsInFront& stands = out[(a + k) % n];
+        if (stands != StandsInFront::kOfBothSides) stands = how;  // both sides farther is the stronger claim
       }
     }
   }

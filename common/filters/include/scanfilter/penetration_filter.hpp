@@ -179,13 +179,21 @@ class PenetrationFilter {
   // within `range_max` of the sensor.
   void markMixedReturnsOfThinObjects(const Scan& scan, const Eigen::Vector2d& origin, double range_max,
                                      std::span<std::uint8_t> labels) const;
-  enum class AlongTheBeam { kInFront, kBehind };
-  // Whether a cell holding obs_th returns in front of p, or an obstacle cell
-  // (more than obs_th) behind it within `range_max` of the sensor, outside
-  // the frame's edge fringes, puts an object in the footprint of the beam
-  // from `origin` to p.
-  bool objectInFootprint(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, double angle_step,
-                         AlongTheBeam where, double range_max) const;
+  // Whether a cell holding obs_th returns (outside the frame's edge fringes)
+  // puts an object in the footprint of the beam from `origin` to p, in front
+  // of p.
+  bool objectInFootprint(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, double angle_step) const;
+  // Whether an obstacle cell (more than obs_th returns, outside the fringes)
+  // lies in that footprint behind p, within `range_max` of the sensor (none
+  // when range_max is not finite, or no farther than p).
+  bool obstacleBehindInFootprint(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, double angle_step,
+                                 double range_max) const;
+  // Whether a cell holding `least` returns, outside the fringes, within the
+  // footprint's box from `from` to `to` along the beam from `origin` (unit
+  // direction), has a position for which pred(position) holds.
+  template <typename Pred>
+  bool anyCellAlongBeam(const Eigen::Vector2d& origin, const Eigen::Vector2d& unit, double from, double to,
+                        double angle_step, int least, Pred&& pred) const;
   // surface_memory: kept returns beyond a remembered surface become
   // misdetected (points_ and `origin` placed as judged).
   void markBeyondRememberedSurfaces(Stamp stamp, const Eigen::Vector2d& origin,

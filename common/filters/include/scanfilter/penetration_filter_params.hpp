@@ -140,11 +140,12 @@ struct PenetrationFilterParams {
   bool thin_object_check = true;
   int thin_object_max_beams = 3;
   double thin_object_radius = 0.02;  // m
-  // Beyond the paper 30: a stretch beside a beam without a return counts too,
-  // when a second cached object (an obstacle cell: more than obs_th returns)
-  // lies in the footprint behind the return (within the sensor's range): with no background within range there, a
-  // mixed return is a mix of two objects, a chair's front and rear legs.
-  // false: such stretches are never marked.
+  // Beyond the paper 30: a stretch beside a beam without a return counts
+  // too, when a second cached object (an obstacle cell: more than obs_th
+  // returns) lies in the footprint behind the return (within the sensor's
+  // range): with no background within range there, a mixed return is a mix
+  // of two objects, a chair's front and rear legs. false: such stretches are
+  // never marked.
   bool thin_object_beside_no_return = true;
   // Beyond the paper: each frame is fitted to the cache before it is judged
   // (frame_alignment.hpp); a frame that does not fit is not judged.

@@ -1,6 +1,7 @@
 #pragma once
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -22,7 +23,9 @@ namespace scanfilter {
 // beam's axis to lie in its footprint, the beam's light came partly from
 // that object, and the return lies where nothing is. Step 2 spares a return
 // the rescue's evidence vouches for (returns seen from elsewhere where it
-// lies): a chair's rear leg, partly behind its front one.
+// lies): a chair's rear leg, partly behind its front one. Beside a beam
+// without a return (nothing within range behind there), the mix needs a
+// second object in the footprint behind the return (Beyond the paper 30).
 class ThinObjectCheck {
  public:
   // depth_step: how much nearer than the return the object must be (and how
@@ -56,10 +59,14 @@ class ThinObjectCheck {
   double depthStep() const { return depth_step_; }
 
  private:
-  // How far q lies along the beam from `origin` through `unit`, when it lies
-  // within the footprint there; a negative value when it does not.
-  double alongInFootprint(const Eigen::Vector2d& origin, const Eigen::Vector2d& unit, const Eigen::Vector2d& q,
-                          double angle_step) const;
+  struct AlongBeam {
+    double along;   // m from the sensor to q's foot on the beam
+    double length;  // m from the sensor to p
+  };
+  // Where q lies along the beam from `origin` to p, when it lies within the
+  // footprint there, in front of the sensor.
+  std::optional<AlongBeam> alongInFootprint(const Eigen::Vector2d& origin, const Eigen::Vector2d& p,
+                                            const Eigen::Vector2d& q, double angle_step) const;
 
   double depth_step_;     // m
   double object_radius_;  // m
@@ -74,7 +81,7 @@ enum class StandsInFront : std::uint8_t {
   // One of them or both return nothing (the other farther): no background
   // within range there, so a mixed return needs a second object in the
   // footprint, behind the return (a chair's rear leg behind its front one).
-  kBesideANoReturn,
+  kBesideNoReturn,
 };
 
 // Returns standing in front: every stretch of at most `max_beams` returns
