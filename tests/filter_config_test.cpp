@@ -60,6 +60,7 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(s.penetration.thin_object_max_beams, d.penetration.thin_object_max_beams);
   EXPECT_EQ(s.penetration.thin_object_radius, d.penetration.thin_object_radius);
   EXPECT_EQ(s.penetration.thin_object_beside_no_return, d.penetration.thin_object_beside_no_return);
+  EXPECT_EQ(s.penetration.thin_object_evidence_kept, d.penetration.thin_object_evidence_kept);
   EXPECT_EQ(s.penetration.free_space_margin_per_m, d.penetration.free_space_margin_per_m);
   EXPECT_EQ(s.jump.noise_estimate, d.jump.noise_estimate);
   EXPECT_EQ(s.jump.noise_estimate_window_scans, d.jump.noise_estimate_window_scans);

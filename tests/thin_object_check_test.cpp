@@ -155,6 +155,9 @@ struct LegScene {
   // where the last frame's return will lie, as a rear leg seen from
   // elsewhere would.
   int earlier_there = 0;
+  // Those returns were removed in their own frames (labelled jump there, as
+  // other frames' mixed returns of a leg mostly are).
+  bool earlier_removed = false;
   // This many beams after the one towards the leg report its range too (an
   // object that wide).
   int beside = 0;
@@ -209,9 +212,11 @@ std::uint8_t legBeamLabel(const PenetrationFilterParams& p, const LegScene& scen
       const Eigen::Vector2d to = rear_leg - sensor_at;
       scan.ranges[test::beamTowards(scan, sensor, std::atan2(to.y(), to.x()))] = to.norm();
     }
+    std::size_t earlier_beam = scan.size();  // none
     if (k < scene.earlier_there) {
       const Eigen::Vector2d to = return_at - sensor_at;
-      scan.ranges[test::beamTowards(scan, sensor, std::atan2(to.y(), to.x()))] = to.norm();
+      earlier_beam = test::beamTowards(scan, sensor, std::atan2(to.y(), to.x()));
+      scan.ranges[earlier_beam] = to.norm();
     }
     if (last) {
       const double range = (leg - sensor_at).norm() - kLegRadius + scene.beyond_leg;
@@ -220,6 +225,7 @@ std::uint8_t legBeamLabel(const PenetrationFilterParams& p, const LegScene& scen
     std::vector<std::uint8_t> labels(scan.size());
     for (std::size_t i = 0; i < scan.size(); ++i)
       labels[i] = scan.hasReturn(i) ? kValid : static_cast<std::uint8_t>(PointCode::kNoReturn);
+    if (scene.earlier_removed && earlier_beam < scan.size()) labels[earlier_beam] = kJump;
     std::vector<std::uint8_t> by_reference = labels;
     reference->apply(scan, sensor, by_reference);
     fast->apply(scan, sensor, labels);
@@ -293,6 +299,20 @@ TEST(ThinObjectCheck, ReturnsFromElsewhereWhereItLiesKeepIt) {
   PenetrationFilterParams no_rescue = p;
   no_rescue.rescue_persistent_points = false;
   EXPECT_EQ(legBeamLabel(no_rescue, {.earlier_there = 5}), kJump) << "without the rescue there is no evidence";
+}
+
+// Returns from elsewhere that their own frames removed (other frames' mixed
+// returns of the same leg) vouch for nothing: the cache must have kept as
+// many there (Beyond the paper 31).
+TEST(ThinObjectCheck, ReturnsRemovedInTheirOwnFramesDoNotKeepIt) {
+  const PenetrationFilterParams p = thinObjectsOnly();
+  ASSERT_TRUE(p.thin_object_evidence_kept);
+  EXPECT_EQ(legBeamLabel(p, {.earlier_there = 5, .earlier_removed = true}), kJump)
+      << "five returns from elsewhere, all removed there";
+  PenetrationFilterParams evidence_alone = p;
+  evidence_alone.thin_object_evidence_kept = false;
+  EXPECT_EQ(legBeamLabel(evidence_alone, {.earlier_there = 5, .earlier_removed = true}), kValid)
+      << "the rescue's evidence alone counts returns of every label";
 }
 
 // Something as wide as thin_object_max_beams beams is checked; wider, it is

@@ -199,6 +199,7 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.read("thin_object_max_beams", p.thin_object_max_beams);
   s.read("thin_object_radius", p.thin_object_radius);
   s.read("thin_object_beside_no_return", p.thin_object_beside_no_return);
+  s.read("thin_object_evidence_kept", p.thin_object_evidence_kept);
   s.take("alignment");
   readAlignment(s, p.alignment);
   s.take("surface_memory");

@@ -384,16 +384,24 @@ double PenetrationFilter::grazingRun(const Eigen::Vector2d& origin, std::size_t 
   return params_.straddle_half_width * along / across;
 }
 
-int PenetrationFilter::evidenceAround(const Eigen::Vector2d& p) const {
-  const CellIndex c = evidence_.cellOf(p);
-  const auto reach = static_cast<int>(std::ceil(params_.rescue_radius / evidence_.cellSize()));
+int PenetrationFilter::countAround(const PenetrationGrid& grid, const Eigen::Vector2d& p) const {
+  const CellIndex c = grid.cellOf(p);
+  const auto reach = static_cast<int>(std::ceil(params_.rescue_radius / grid.cellSize()));
   const double radius_sq = params_.rescue_radius * params_.rescue_radius;
   int sum = 0;
-  evidence_.forEachCountedIn({c.x - reach, c.y - reach}, {c.x + reach, c.y + reach},
-                             [&](int count, const Eigen::Vector2d& centroid) {
-                               if ((centroid - p).squaredNorm() <= radius_sq) sum += count;
-                             });
+  grid.forEachCountedIn({c.x - reach, c.y - reach}, {c.x + reach, c.y + reach},
+                        [&](int count, const Eigen::Vector2d& centroid) {
+                          if ((centroid - p).squaredNorm() <= radius_sq) sum += count;
+                        });
   return sum;
+}
+
+bool PenetrationFilter::thinObjectStandsAt(const Eigen::Vector2d& p) const {
+  if (!params_.rescue_persistent_points || evidenceAround(p) < params_.rescue_min_count) return false;
+  // Other frames' mixed returns of the same leg land near a mixed return
+  // too, and most of them were removed in their own frames; a real object's
+  // returns were kept there (docs/accuracy.md, 31).
+  return !params_.thin_object_evidence_kept || keptReturnsAround(p) >= params_.rescue_min_count;
 }
 
 void PenetrationFilter::rescuePersistentPoints(std::span<std::uint8_t> labels) {
@@ -440,7 +448,7 @@ void PenetrationFilter::markMixedReturnsOfThinObjects(const Scan& scan, const Ei
     // A return the rescue would restore (its evidence: returns of frames
     // taken rescue_min_baseline away, or of all while none is) is an object
     // there: the rear leg of a chair, partly behind a front one.
-    if (params_.rescue_persistent_points && evidenceAround(points_[i]) >= params_.rescue_min_count) continue;
+    if (thinObjectStandsAt(points_[i])) continue;
     if (!objectInFootprint(origin, points_[i], angle_step)) continue;
     // With nothing within range beside it, the rest of the footprint found
     // no background there: a mix needs a second object behind the return.

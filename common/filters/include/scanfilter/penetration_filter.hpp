@@ -158,7 +158,16 @@ class PenetrationFilter {
   // and `end` would run on past the fringe's reach.
   bool cacheEndsToo(const Eigen::Vector2d& end, const Eigen::Vector2d& inside) const;
   void rescuePersistentPoints(std::span<std::uint8_t> labels);
-  int evidenceAround(const Eigen::Vector2d& p) const;
+  // Returns of `grid` whose cells' means lie within rescue_radius of p.
+  int countAround(const PenetrationGrid& grid, const Eigen::Vector2d& p) const;
+  // The rescue's evidence there: returns of every label, from the frames it admits.
+  int evidenceAround(const Eigen::Vector2d& p) const { return countAround(evidence_, p); }
+  // The cache's kept returns there (grid_'s votes), from every cached frame.
+  int keptReturnsAround(const Eigen::Vector2d& p) const { return countAround(grid_, p); }
+  // thin_object_check: whether returns from elsewhere say an object stands
+  // at p (the rescue's evidence holds rescue_min_count returns, and with
+  // thin_object_evidence_kept as many kept returns of the cache lie there).
+  bool thinObjectStandsAt(const Eigen::Vector2d& p) const;
   void resetOnPoseJump(const Eigen::Vector2d& origin, Stamp stamp);
   void dropOldestFrame();
   // Drops the cached frames older than T_max at `stamp`.
