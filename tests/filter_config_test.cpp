@@ -170,6 +170,10 @@ TEST(FilterConfig, CountsOfReturnsFollowTheAngularStep) {
 TEST(FilterConfigErrors, NameFileLineAndKey) {
   EXPECT_EQ(errorOf("jump_filter:\n  alpha: fast\n"), "f.yaml:2: jump_filter.alpha: expected a number, got \"fast\"");
   EXPECT_EQ(errorOf("jump_filter:\n  alpah: 1\n"), "f.yaml:2: jump_filter.alpah: unknown key");
+  EXPECT_EQ(errorOf("jump_filter:\n  d_max: .inf\n"),
+            "f.yaml:2: jump_filter.d_max: expected 0 <= value <= 1e4 (m), or auto");
+  EXPECT_EQ(errorOf("jump_filter:\n  d_min: -1\n"),
+            "f.yaml:2: jump_filter.d_min: expected 0 <= value <= 1e4 (m), or auto");
   EXPECT_EQ(errorOf("jump_filter:\n  theta_k_deg: 90\n"),
             "f.yaml:2: jump_filter.theta_k_deg: expected 0 <= value < 90 (cos θK must stay positive)");
   EXPECT_EQ(errorOf("penetration_filter:\n  min_frames: 0\n"), "f.yaml:2: penetration_filter.min_frames: expected an integer >= 1");

@@ -155,9 +155,9 @@ struct LegScene {
   // where the last frame's return will lie, as a rear leg seen from
   // elsewhere would.
   int earlier_there = 0;
-  // Those returns were removed in their own frames (labelled jump there, as
-  // other frames' mixed returns of a leg mostly are).
-  bool earlier_removed = false;
+  // The first this many of those returns were removed in their own frames
+  // (labelled jump there, as other frames' mixed returns of a leg mostly are).
+  int earlier_removed = 0;
   // This many beams after the one towards the leg report its range too (an
   // object that wide).
   int beside = 0;
@@ -225,7 +225,7 @@ std::uint8_t legBeamLabel(const PenetrationFilterParams& p, const LegScene& scen
     std::vector<std::uint8_t> labels(scan.size());
     for (std::size_t i = 0; i < scan.size(); ++i)
       labels[i] = scan.hasReturn(i) ? kValid : static_cast<std::uint8_t>(PointCode::kNoReturn);
-    if (scene.earlier_removed && earlier_beam < scan.size()) labels[earlier_beam] = kJump;
+    if (k < scene.earlier_removed && earlier_beam < scan.size()) labels[earlier_beam] = kJump;
     std::vector<std::uint8_t> by_reference = labels;
     reference->apply(scan, sensor, by_reference);
     fast->apply(scan, sensor, labels);
@@ -307,11 +307,15 @@ TEST(ThinObjectCheck, ReturnsFromElsewhereWhereItLiesKeepIt) {
 TEST(ThinObjectCheck, ReturnsRemovedInTheirOwnFramesDoNotKeepIt) {
   const PenetrationFilterParams p = thinObjectsOnly();
   ASSERT_TRUE(p.thin_object_evidence_kept);
-  EXPECT_EQ(legBeamLabel(p, {.earlier_there = 5, .earlier_removed = true}), kJump)
+  ASSERT_EQ(p.rescue_min_count, 5);
+  EXPECT_EQ(legBeamLabel(p, {.earlier_there = 5, .earlier_removed = 5}), kJump)
       << "five returns from elsewhere, all removed there";
+  EXPECT_EQ(legBeamLabel(p, {.earlier_there = 5, .earlier_removed = 1}), kJump)
+      << "five returns from elsewhere, four of them kept: fewer than rescue_min_count";
+  EXPECT_EQ(legBeamLabel(p, {.earlier_there = 5}), kValid) << "five kept";
   PenetrationFilterParams evidence_alone = p;
   evidence_alone.thin_object_evidence_kept = false;
-  EXPECT_EQ(legBeamLabel(evidence_alone, {.earlier_there = 5, .earlier_removed = true}), kValid)
+  EXPECT_EQ(legBeamLabel(evidence_alone, {.earlier_there = 5, .earlier_removed = 5}), kValid)
       << "the rescue's evidence alone counts returns of every label";
 }
 

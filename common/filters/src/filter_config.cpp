@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "scanfilter/input_error.hpp"
+#include "scanfilter/plausible_bounds.hpp"
 #include "scanfilter/yaml_section.hpp"
 
 namespace scanfilter {
@@ -51,6 +52,10 @@ void readJump(YamlSection& s, FilterConfig& config) {
   s.requireRange("radius_noise_sigmas", p.radius_noise_sigmas, 0.0, 100.0, "0-100");
   s.requireRange("straight_run_max_incidence_deg", p.straight_run_max_incidence_deg, 0.0, 89.9, "0-89.9 (degrees)");
   s.requireRange("straight_run_min_points", p.straight_run_min_points, 3, 1e6, "an integer >= 3");
+  // Ranges, as a sensor's are: an infinite d_max (a fuzzed config) sized the
+  // noise estimate's range bands from infinity.
+  if (config.d_min) s.requireRange("d_min", *config.d_min, 0.0, kMaxPlausibleRange, "0 <= value <= 1e4 (m), or auto");
+  if (config.d_max) s.requireRange("d_max", *config.d_max, 0.0, kMaxPlausibleRange, "0 <= value <= 1e4 (m), or auto");
   if (config.d_min && config.d_max && !(*config.d_max > *config.d_min)) s.fail("d_max", "expected d_max > d_min");
   s.rejectUnknownKeys();
 }

@@ -147,11 +147,14 @@ struct PenetrationFilterParams {
   // of two objects, a chair's front and rear legs. false: such stretches are
   // never marked.
   bool thin_object_beside_no_return = true;
-  // Beyond the paper 31: the returns from elsewhere that spare a return in
-  // the thin-object check must include rescue_min_count returns the cache
-  // kept (its votes) within rescue_radius: other frames' mixed returns of a
-  // leg land there too, but were mostly removed in their own frames. false:
-  // the rescue's evidence alone (returns of every label).
+  // Beyond the paper 31: besides the rescue's evidence, the cache's votes
+  // (the returns its frames kept, of every cached frame, near or far, judged
+  // or still warming up) must hold rescue_min_count returns within
+  // rescue_radius to spare a return in the thin-object check: other frames'
+  // mixed returns of a leg land there too, but were mostly removed in their
+  // own frames. What votes also follows edge_vote_margin_deg,
+  // grazing_vote_max_deg and cache_misdetected_points. false: the rescue's
+  // evidence alone (returns of every label).
   bool thin_object_evidence_kept = true;
   // Beyond the paper: each frame is fitted to the cache before it is judged
   // (frame_alignment.hpp); a frame that does not fit is not judged.
