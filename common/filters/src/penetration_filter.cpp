@@ -445,9 +445,9 @@ void PenetrationFilter::markMixedReturnsOfThinObjects(const Scan& scan, const Ei
     if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid) || stands[i] == StandsInFront::kNo) continue;
     const bool beside_no_return = stands[i] == StandsInFront::kBesideNoReturn;
     if (beside_no_return && !params_.thin_object_beside_no_return) continue;
-    // A return the rescue would restore (its evidence: returns of frames
-    // taken rescue_min_baseline away, or of all while none is) is an object
-    // there: the rear leg of a chair, partly behind a front one.
+    // A return that returns from elsewhere vouch for (the rescue's evidence,
+    // and as many of the cache's kept returns) is an object there: the rear
+    // leg of a chair, partly behind a front one.
     if (thinObjectStandsAt(points_[i])) continue;
     if (!objectInFootprint(origin, points_[i], angle_step)) continue;
     // With nothing within range beside it, the rest of the footprint found
