@@ -459,7 +459,11 @@ void PenetrationFilter::markMixedReturnsOfThinObjects(const Scan& scan, const Ei
 
 template <typename Pred>
 bool PenetrationFilter::anyCellAlongBeam(const Eigen::Vector2d& origin, const Eigen::Vector2d& unit, double from,
-                                         double to, double angle_step, int least, Pred&& pred) const {
+                                         double to, double angle_step, CellsThatCount cells, Pred&& pred) const {
+  const auto holds = [&](CellIndex c) {
+    const Eigen::Vector2d q = obstaclePosition(c);
+    return countsAsObstacle(q) && pred(q);
+  };
   // Stretch by stretch along the beam, each boxed with the footprint's width
   // there: the cells visited follow the beam, not the box around all of it.
   constexpr double kStretch = 0.5;  // m, ten cells of 5 cm
@@ -470,11 +474,11 @@ bool PenetrationFilter::anyCellAlongBeam(const Eigen::Vector2d& origin, const Ei
     // A cell's position lies in the cell, so the cells of the box hold every
     // position within it.
     const double pad = thin_objects_.halfWidthAt(far, angle_step);
-    const bool found = grid_.anyCellHoldingIn(grid_.cellOf(a.cwiseMin(b).array() - pad),
-                                              grid_.cellOf(a.cwiseMax(b).array() + pad), least, [&](CellIndex c) {
-                                                const Eigen::Vector2d q = obstaclePosition(c);
-                                                return countsAsObstacle(q) && pred(q);
-                                              });
+    const CellIndex lo = grid_.cellOf(a.cwiseMin(b).array() - pad);
+    const CellIndex hi = grid_.cellOf(a.cwiseMax(b).array() + pad);
+    const bool found = cells == CellsThatCount::kObstacles
+                           ? grid_.anyObstacleIn(lo, hi, holds)
+                           : grid_.anyCellHoldingIn(lo, hi, params_.obstacle_threshold, holds);
     if (found) return true;
   }
   return false;
@@ -487,7 +491,7 @@ bool PenetrationFilter::objectInFootprint(const Eigen::Vector2d& origin, const E
   // Cells holding obs_th returns count, one fewer than an obstacle needs:
   // most of a thin leg's returns are mixed and land elsewhere.
   return anyCellAlongBeam(origin, (p - origin) / length, 0.0, length - thin_objects_.depthStep(), angle_step,
-                          params_.obstacle_threshold, [&](const Eigen::Vector2d& q) {
+                          CellsThatCount::kHoldingObsTh, [&](const Eigen::Vector2d& q) {
                             return thin_objects_.inFootprintInFront(origin, p, q, angle_step);
                           });
 }
@@ -501,7 +505,7 @@ bool PenetrationFilter::obstacleBehindInFootprint(const Eigen::Vector2d& origin,
   // with those, thin legs seen past another near the range's end were lost
   // (docs/accuracy.md, 30).
   return anyCellAlongBeam(origin, (p - origin) / length, length + thin_objects_.depthStep(), range_max, angle_step,
-                          params_.obstacle_threshold + 1, [&](const Eigen::Vector2d& q) {
+                          CellsThatCount::kObstacles, [&](const Eigen::Vector2d& q) {
                             return thin_objects_.inFootprintBehind(origin, p, q, angle_step, range_max);
                           });
 }

@@ -119,12 +119,13 @@ std::size_t rootOf(std::vector<std::size_t>& parent, std::size_t i) {
 }
 
 // Whether two cells with local lines belong to one surface: near each
-// other, alike in direction, each on the other's line.
+// other, alike in direction (|cos| of their angle at least `min_cos`), each
+// on the other's line.
 bool sameSurface(const CellMean& a, const Eigen::Vector2d& a_direction, const CellMean& b,
-                 const Eigen::Vector2d& b_direction, const SparseSurfaceParams& params) {
+                 const Eigen::Vector2d& b_direction, double min_cos, const SparseSurfaceParams& params) {
   const Eigen::Vector2d d = b.at - a.at;
   if (d.squaredNorm() > params.max_gap * params.max_gap) return false;
-  if (std::abs(a_direction.dot(b_direction)) < std::cos(degreesToRadians(params.max_angle_deg))) return false;
+  if (std::abs(a_direction.dot(b_direction)) < min_cos) return false;
   const auto offLine = [&](const Eigen::Vector2d& direction) { return std::abs(cross(direction, d)); };
   return offLine(a_direction) <= onLineTolerance(params) && offLine(b_direction) <= onLineTolerance(params);
 }
@@ -136,10 +137,11 @@ std::vector<std::vector<std::size_t>> joinedLines(std::span<const CellMean> cell
                                                   double cell_size, const SparseSurfaceParams& params) {
   std::vector<std::size_t> parent(cells.size());
   std::iota(parent.begin(), parent.end(), std::size_t{0});
+  const double min_cos = std::cos(degreesToRadians(params.max_angle_deg));
   for (std::size_t i = 0; i < cells.size(); ++i) {
     if (!direction[i]) continue;
     raster.forEachNear(i, cellsWithin(params.max_gap, cell_size), [&](std::size_t j) {
-      if (j > i && direction[j] && sameSurface(cells[i], *direction[i], cells[j], *direction[j], params))
+      if (j > i && direction[j] && sameSurface(cells[i], *direction[i], cells[j], *direction[j], min_cos, params))
         parent[rootOf(parent, j)] = rootOf(parent, i);
     });
   }

@@ -197,12 +197,14 @@ class PenetrationFilter {
   // when range_max is not finite, or no farther than p).
   bool obstacleBehindInFootprint(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, double angle_step,
                                  double range_max) const;
-  // Whether a cell holding `least` returns, outside the fringes, within the
-  // footprint's box from `from` to `to` along the beam from `origin` (unit
-  // direction), has a position for which pred(position) holds.
+  // Which cells of grid_ the walks along a beam look at.
+  enum class CellsThatCount { kHoldingObsTh, kObstacles };
+  // Whether such a cell, outside the fringes, within the footprint's box
+  // from `from` to `to` along the beam from `origin` (unit direction), has a
+  // position for which pred(position) holds.
   template <typename Pred>
   bool anyCellAlongBeam(const Eigen::Vector2d& origin, const Eigen::Vector2d& unit, double from, double to,
-                        double angle_step, int least, Pred&& pred) const;
+                        double angle_step, CellsThatCount cells, Pred&& pred) const;
   // surface_memory: kept returns beyond a remembered surface become
   // misdetected (points_ and `origin` placed as judged).
   void markBeyondRememberedSurfaces(Stamp stamp, const Eigen::Vector2d& origin,
