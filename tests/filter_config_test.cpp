@@ -49,6 +49,9 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(s.penetration.rescue_persistent_points, d.penetration.rescue_persistent_points);
   EXPECT_EQ(s.penetration.rescue_min_count, d.penetration.rescue_min_count);
   EXPECT_EQ(s.penetration.rescue_radius, d.penetration.rescue_radius);
+  EXPECT_EQ(s.penetration.evidence_noise_sigmas, d.penetration.evidence_noise_sigmas);
+  EXPECT_EQ(s.penetration.noise_sampling.window_scans, d.penetration.noise_sampling.window_scans);
+  EXPECT_EQ(s.penetration.noise_sampling.min_samples, d.penetration.noise_sampling.min_samples);
   EXPECT_EQ(s.penetration.edge_vote_margin_deg, d.penetration.edge_vote_margin_deg);
   EXPECT_EQ(s.penetration.edge_depth_step, d.penetration.edge_depth_step);
   EXPECT_EQ(s.penetration.free_space_check, d.penetration.free_space_check);
@@ -59,12 +62,13 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(s.penetration.thin_object_check, d.penetration.thin_object_check);
   EXPECT_EQ(s.penetration.thin_object_max_beams, d.penetration.thin_object_max_beams);
   EXPECT_EQ(s.penetration.thin_object_radius, d.penetration.thin_object_radius);
+  EXPECT_EQ(s.penetration.thin_object_min_returns, d.penetration.thin_object_min_returns);
   EXPECT_EQ(s.penetration.thin_object_beside_no_return, d.penetration.thin_object_beside_no_return);
   EXPECT_EQ(s.penetration.thin_object_evidence_kept, d.penetration.thin_object_evidence_kept);
   EXPECT_EQ(s.penetration.free_space_margin_per_m, d.penetration.free_space_margin_per_m);
   EXPECT_EQ(s.jump.noise_estimate, d.jump.noise_estimate);
-  EXPECT_EQ(s.jump.noise_estimate_window_scans, d.jump.noise_estimate_window_scans);
-  EXPECT_EQ(s.jump.noise_estimate_min_samples, d.jump.noise_estimate_min_samples);
+  EXPECT_EQ(s.jump.noise_sampling.window_scans, d.jump.noise_sampling.window_scans);
+  EXPECT_EQ(s.jump.noise_sampling.min_samples, d.jump.noise_sampling.min_samples);
   EXPECT_EQ(s.penetration.alignment.max_fit_points, d.penetration.alignment.max_fit_points);
   const SurfaceMemoryParams& sm = s.penetration.surface_memory;
   const SurfaceMemoryParams& dm = d.penetration.surface_memory;
@@ -130,6 +134,19 @@ TEST(FilterConfig, AutoValuesComeFromTheSensor) {
   EXPECT_DOUBLE_EQ(p.jump.angular_accuracy_deg, 0.5);
 }
 
+// Step 2 measures the range noise over its own window, with step 1's
+// minimum of samples a band needs (Beyond the paper 33).
+TEST(FilterConfig, StepTwoSamplesTheNoiseWithStepOnesMinimum) {
+  const FilterConfig c = parseFilterConfig(
+      "jump_filter:\n  noise_estimate_min_samples: 50\n"
+      "penetration_filter:\n  evidence_noise_window_scans: 7\n  evidence_noise_sigmas: 3\n",
+      "f.yaml");
+  const PenetrationFilterParams p = c.resolve(SensorInfo{}).penetration;
+  EXPECT_DOUBLE_EQ(p.noise_sampling.min_samples, 50.0);
+  EXPECT_DOUBLE_EQ(p.noise_sampling.window_scans, 7.0);
+  EXPECT_DOUBLE_EQ(p.evidence_noise_sigmas, 3.0);
+}
+
 // obs_th and the free-space check's veto count returns, and a surface gives
 // more of them the finer the step: each is given for its reference step and
 // scaled. The rescue's count is not (measured on the real logs).
@@ -144,10 +161,12 @@ TEST(FilterConfig, CountsOfReturnsFollowTheAngularStep) {
   EXPECT_EQ(one_degree.obstacle_threshold, 2);
   EXPECT_EQ(one_degree.free_space_veto_count, 2);
   EXPECT_EQ(one_degree.rescue_min_count, 5);
+  EXPECT_EQ(one_degree.thin_object_min_returns, 1);
   const PenetrationFilterParams quarter = at(shipped, 0.25);
   EXPECT_EQ(quarter.obstacle_threshold, 8);
   EXPECT_EQ(quarter.free_space_veto_count, 8);
   EXPECT_EQ(quarter.rescue_min_count, 5);
+  EXPECT_EQ(quarter.thin_object_min_returns, 4);
   EXPECT_EQ(at(shipped, 0.3515625).free_space_veto_count, 6);  // URG-04LX: 1,024 steps a turn
   EXPECT_EQ(at(shipped, 5.0).free_space_veto_count, 1) << "0.4 rounds to 0, and a veto of 0 would need no evidence";
   // The sparse surfaces' support grows with the square root of the beams.
@@ -163,6 +182,7 @@ TEST(FilterConfig, CountsOfReturnsFollowTheAngularStep) {
       "f.yaml");
   const PenetrationFilterParams fixed = at(as_given, 0.25);
   EXPECT_EQ(fixed.obstacle_threshold, 2);
+  EXPECT_EQ(fixed.thin_object_min_returns, 1);
   EXPECT_EQ(fixed.free_space_veto_count, 2);
   EXPECT_EQ(fixed.surface_memory.sparse_surfaces.min_cells, 6);
 }
@@ -215,6 +235,12 @@ TEST(FilterConfigErrors, NameFileLineAndKey) {
             "f.yaml:2: penetration_filter.thin_object_max_beams: expected an integer >= 1");
   EXPECT_EQ(errorOf("penetration_filter:\n  thin_object_radius: 2\n"),
             "f.yaml:2: penetration_filter.thin_object_radius: expected 0 <= value <= 1 (m)");
+  EXPECT_EQ(errorOf("penetration_filter:\n  thin_object_min_returns: 0\n"),
+            "f.yaml:2: penetration_filter.thin_object_min_returns: expected an integer >= 1");
+  EXPECT_EQ(errorOf("penetration_filter:\n  evidence_noise_sigmas: -1\n"),
+            "f.yaml:2: penetration_filter.evidence_noise_sigmas: expected 0 <= value <= 100 (0: off)");
+  EXPECT_EQ(errorOf("penetration_filter:\n  evidence_noise_window_scans: 0.5\n"),
+            "f.yaml:2: penetration_filter.evidence_noise_window_scans: expected 1-1e6 (scans)");
   EXPECT_EQ(errorOf("penetration_filter:\n  obstacle_at_centroid: false\n"),
             "f.yaml:2: penetration_filter.require_surface_extent: needs obstacle_at_centroid: true (or set "
             "require_surface_extent: false for cell centres)");

@@ -532,6 +532,47 @@ TEST(PenetrationFilter, RescueRestoresPersistentJumpPoints) {
   EXPECT_EQ(labels[leg], kValid) << "the leg, seen in every frame, is restored";
 }
 
+// Beyond the paper 33: a noisy sensor scatters a leg's returns farther than
+// rescue_radius, so the evidence radius grows with the range noise step 2
+// measures. The room's walls carry 6 cm of noise (5σ: 0.3 m); the leg's
+// returns of the earlier frames lie 12 cm beyond the last one's. Returns
+// the leg's label in the last frame, the same from both implementations.
+std::uint8_t scatteredLegLabel(double evidence_noise_sigmas) {
+  const SensorInfo sensor = test::simpleSensor();
+  PenetrationFilterParams p;
+  p.rescue_min_baseline = 0.0;  // every cached frame vouches (the baseline: the test below)
+  p.evidence_noise_sigmas = evidence_noise_sigmas;
+  p.free_space_check = false;   // the rescue alone decides
+  p.surface_memory.lifetime = 0.0;
+  BothFilters filters(p);
+  constexpr double kWallNoise = 0.06, kScatter = 0.12;  // m
+  std::mt19937 rng(5);
+  std::normal_distribution<double> normal;
+  const World legs = World{kRoom}.leg({1.0, 0.0}, 0.015);
+  std::vector<std::uint8_t> labels;
+  std::size_t leg = 0;
+  constexpr int kFrames = 12;
+  for (int k = 0; k < kFrames; ++k) {
+    Scan scan = castScan(legs, {-0.01 * k, 0.0, 0.0}, sensor, 360, 0.1 * k);
+    leg = test::beamTowards(scan, sensor, 0.0);
+    for (double& r : scan.ranges)
+      if (std::isfinite(r) && r > 1.5) r += kWallNoise * normal(rng);
+    if (k < kFrames - 1) scan.ranges[leg] += kScatter;
+    labels.assign(scan.size(), kValid);
+    for (std::size_t i = 0; i < scan.size(); ++i)
+      if (!scan.hasReturn(i)) labels[i] = static_cast<std::uint8_t>(PointCode::kNoReturn);
+    labels[leg] = static_cast<std::uint8_t>(PointCode::kJump);  // as step 1 says
+    labels = filters.apply(scan, sensor, labels);
+  }
+  return labels[leg];
+}
+
+TEST(PenetrationFilter, TheRescuesReachFollowsTheMeasuredRangeNoise) {
+  EXPECT_EQ(scatteredLegLabel(5.0), kValid) << "the scattered returns lie within 5 sigma of it";
+  EXPECT_EQ(scatteredLegLabel(0.0), static_cast<std::uint8_t>(PointCode::kJump))
+      << "12 cm is beyond rescue_radius (8 cm)";
+}
+
 // A leg 1 m ahead of the first pose that step 1 calls jump in every frame
 // (10 Hz), there from frame `leg_from` on, the sensor backing away `step` m a
 // frame: the leg's label in the last of `frames`, the same from both

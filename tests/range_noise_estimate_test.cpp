@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "scan_builder.hpp"
+#include "noisy_room.hpp"
 #include "scanfilter/jump_filter.hpp"
 #include "scanfilter/point_code.hpp"
 #include "scanfilter/range_noise_estimate.hpp"
@@ -16,39 +16,10 @@
 namespace scanfilter {
 namespace {
 
-using test::castScan;
-using test::World;
+SensorInfo sensor() { return test::noisyRoomSensor(); }
 
-constexpr double kRoomHalfWidth = 6.0;  // m: ranges from 6 to 8.5 m from the middle ...
-constexpr double kOffCentre = 4.5;      // m: ... and from 1.5 m up when the sensor stands off centre
-
-World squareRoom() {
-  const double h = kRoomHalfWidth;
-  World w;
-  w.wall({-h, -h}, {h, -h}).wall({h, -h}, {h, h}).wall({h, h}, {-h, h}).wall({-h, h}, {-h, -h});
-  return w;
-}
-
-SensorInfo sensor() {
-  SensorInfo s;
-  s.range_min = 0.1;
-  s.range_max = 12.0;
-  return s;
-}
-
-// Scans of the room from a few places, ranges perturbed by σ(d) = base + quadratic·d².
 std::vector<Scan> noisyScans(double base, double quadratic, int count, std::uint32_t seed = 7) {
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> normal;
-  std::vector<Scan> scans;
-  for (int k = 0; k < count; ++k) {
-    const double x = kOffCentre * std::cos(0.7 * k), y = kOffCentre * std::sin(0.7 * k) * 0.5;
-    Scan scan = castScan(squareRoom(), {x, y, 0.1 * k}, sensor(), 720);
-    for (double& r : scan.ranges)
-      if (std::isfinite(r)) r += (base + quadratic * r * r) * normal(rng);
-    scans.push_back(std::move(scan));
-  }
-  return scans;
+  return test::noisyRoomScans(base, quadratic, count, seed);
 }
 
 // Smoothed over many scans, so that the figures below are tight.
@@ -57,8 +28,8 @@ JumpFilterParams params(double base, double quadratic) {
   p.noise_sigma_base = base;
   p.noise_sigma_quadratic = quadratic;
   p.d_max = sensor().range_max;
-  p.noise_estimate_window_scans = 200;
-  p.noise_estimate_min_samples = 100;
+  p.noise_sampling.window_scans = 200;
+  p.noise_sampling.min_samples = 100;
   return p;
 }
 
@@ -99,7 +70,7 @@ TEST(RangeNoiseEstimate, TheConfiguredModelIsTheFloorOfEachTerm) {
 
 TEST(RangeNoiseEstimate, TheConfiguredModelHoldsUntilTwoBandsHaveEnoughSamples) {
   JumpFilterParams p = params(0.003, 0.001);
-  p.noise_estimate_min_samples = 1e6;
+  p.noise_sampling.min_samples = 1e6;
   EXPECT_EQ(estimateOf(noisyScans(0.03, 0.0, 10), p).model(), (RangeNoiseModel{0.003, 0.001}));
   EXPECT_EQ(RangeNoiseEstimate(params(0.003, 0.001)).model(), (RangeNoiseModel{0.003, 0.001}));
 }

@@ -328,14 +328,17 @@ TEST(ThinObjectCheck, OnlyStretchesUpToMaxBeams) {
   EXPECT_EQ(legBeamLabel(p, {.beside = 3}), kValid) << "four beams";
 }
 
-// Most of a thin leg's returns are mixed and land elsewhere, so a cell
-// holding obs_th returns (2 at 1°) is an object here, though an obstacle
-// needs more.
-TEST(ThinObjectCheck, ACellHoldingObsThReturnsIsAnObject) {
-  const PenetrationFilterParams p = thinObjectsOnly();
-  ASSERT_EQ(p.obstacle_threshold, 2);
-  EXPECT_EQ(legBeamLabel(p, {.leg_returns = 2}), kJump) << "two cached returns at the leg: an object in the footprint";
-  EXPECT_EQ(legBeamLabel(p, {.leg_returns = 1}), kValid) << "one is not";
+// Most of a thin leg's returns are mixed and land elsewhere, and the cache
+// keeps few on the leg itself: a cell holding thin_object_min_returns (1 at
+// 1°) is an object here, though an obstacle needs more than obs_th (Beyond
+// the paper 32).
+TEST(ThinObjectCheck, ACellHoldingThinObjectMinReturnsIsAnObject) {
+  PenetrationFilterParams p = thinObjectsOnly();
+  ASSERT_EQ(p.thin_object_min_returns, 1);
+  EXPECT_EQ(legBeamLabel(p, {.leg_returns = 1}), kJump) << "one cached return at the leg: an object in the footprint";
+  p.thin_object_min_returns = 2;
+  EXPECT_EQ(legBeamLabel(p, {.leg_returns = 2}), kJump) << "two, when two are asked for";
+  EXPECT_EQ(legBeamLabel(p, {.leg_returns = 1}), kValid) << "one is then not";
 }
 
 }  // namespace

@@ -30,8 +30,8 @@ void readJump(YamlSection& s, FilterConfig& config) {
   s.read("noise_sigma_base", p.noise_sigma_base);
   s.read("noise_sigma_quadratic", p.noise_sigma_quadratic);
   s.read("noise_estimate", p.noise_estimate);
-  s.read("noise_estimate_window_scans", p.noise_estimate_window_scans);
-  s.read("noise_estimate_min_samples", p.noise_estimate_min_samples);
+  s.read("noise_estimate_window_scans", p.noise_sampling.window_scans);
+  s.read("noise_estimate_min_samples", p.noise_sampling.min_samples);
   s.read("radius_noise_sigmas", p.radius_noise_sigmas);
   s.read("straight_runs", p.straight_runs);
   s.read("straight_run_max_incidence_deg", p.straight_run_max_incidence_deg);
@@ -47,8 +47,8 @@ void readJump(YamlSection& s, FilterConfig& config) {
   s.requireRange("off_surface_sigmas", p.off_surface_sigmas, 0.0, 1e9, "a value >= 0");
   s.requireRange("noise_sigma_base", p.noise_sigma_base, 0.0, 1e9, "a value >= 0 (m)");
   s.requireRange("noise_sigma_quadratic", p.noise_sigma_quadratic, 0.0, 1e9, "a value >= 0 (m per m²)");
-  s.requireRange("noise_estimate_window_scans", p.noise_estimate_window_scans, 1.0, 1e6, "1-1e6 (scans)");
-  s.requireRange("noise_estimate_min_samples", p.noise_estimate_min_samples, 1.0, 1e9, "a value >= 1 (residuals)");
+  s.requireRange("noise_estimate_window_scans", p.noise_sampling.window_scans, 1.0, 1e6, "1-1e6 (scans)");
+  s.requireRange("noise_estimate_min_samples", p.noise_sampling.min_samples, 1.0, 1e9, "a value >= 1 (residuals)");
   s.requireRange("radius_noise_sigmas", p.radius_noise_sigmas, 0.0, 100.0, "0-100");
   s.requireRange("straight_run_max_incidence_deg", p.straight_run_max_incidence_deg, 0.0, 89.9, "0-89.9 (degrees)");
   s.requireRange("straight_run_min_points", p.straight_run_min_points, 3, 1e6, "an integer >= 3");
@@ -193,6 +193,8 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.read("rescue_persistent_points", p.rescue_persistent_points);
   s.read("rescue_min_count", p.rescue_min_count);
   s.read("rescue_radius", p.rescue_radius);
+  s.read("evidence_noise_sigmas", p.evidence_noise_sigmas);
+  s.read("evidence_noise_window_scans", p.noise_sampling.window_scans);
   s.read("rescue_min_baseline", p.rescue_min_baseline);
   s.read("free_space_check", p.free_space_check);
   s.read("free_space_margin", p.free_space_margin);
@@ -203,6 +205,7 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.read("thin_object_check", p.thin_object_check);
   s.read("thin_object_max_beams", p.thin_object_max_beams);
   s.read("thin_object_radius", p.thin_object_radius);
+  s.read("thin_object_min_returns", p.thin_object_min_returns);
   s.read("thin_object_beside_no_return", p.thin_object_beside_no_return);
   s.read("thin_object_evidence_kept", p.thin_object_evidence_kept);
   s.take("alignment");
@@ -225,6 +228,8 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.requireRange("cache_min_interval", p.cache_min_interval, 0.0, 10.0, "0 <= value <= 10 (s; 0: every frame)");
   s.requireRange("rescue_min_count", p.rescue_min_count, 1, 1e9, "an integer >= 1");
   s.requireRange("rescue_radius", p.rescue_radius, 0.0, 1.0, "0 <= value <= 1 (m)");
+  s.requireRange("evidence_noise_sigmas", p.evidence_noise_sigmas, 0.0, 100.0, "0 <= value <= 100 (0: off)");
+  s.requireRange("evidence_noise_window_scans", p.noise_sampling.window_scans, 1.0, 1e6, "1-1e6 (scans)");
   s.requireRange("rescue_min_baseline", p.rescue_min_baseline, 0.0, 100.0, "0 <= value <= 100 (m; 0: off)");
   s.requireRange("edge_vote_margin_deg", p.edge_vote_margin_deg, 0.0, 45.0, "0 <= value <= 45 (degrees; 0: off)");
   s.requireRange("edge_depth_step", p.edge_depth_step, 0.0, 10.0, "0 <= value <= 10 (m)");
@@ -238,6 +243,7 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
                  "an integer from 1 to max_cache_frames");
   s.requireRange("free_space_veto_count", p.free_space_veto_count, 1, 1e9, "an integer >= 1");
   s.requireRange("thin_object_max_beams", p.thin_object_max_beams, 1, 1e9, "an integer >= 1");
+  s.requireRange("thin_object_min_returns", p.thin_object_min_returns, 1, 1e9, "an integer >= 1");
   s.requireRange("thin_object_radius", p.thin_object_radius, 0.0, 1.0, "0 <= value <= 1 (m)");
   // With no depth step every local minimum would stand in front, and a return's own cell in front of it.
   if (p.thin_object_check && !(p.edge_depth_step > 0.0))
@@ -294,9 +300,13 @@ TwoStepFilterParams FilterConfig::resolve(const SensorInfo& sensor) const {
   out.jump.d_min = d_min.value_or(sensor.range_min);
   out.jump.d_max = d_max.value_or(sensor.range_max);
   PenetrationFilterParams& p = out.penetration;
+  // Step 2 measures the range noise as step 1 does, over its own window
+  // (evidence_radius.hpp).
+  p.noise_sampling.min_samples = out.jump.noise_sampling.min_samples;
   if (obstacle_threshold_reference_deg > 0.0) {
     const double beams = beamsPerReferenceStep(obstacle_threshold_reference_deg, out.jump);
     p.obstacle_threshold = scaledCount(p.obstacle_threshold, beams, 0);
+    p.thin_object_min_returns = scaledCount(p.thin_object_min_returns, beams, 1);
   }
   if (free_space_veto_reference_deg > 0.0) {
     // rescue_min_count is not scaled: measured, scaling it too lost more

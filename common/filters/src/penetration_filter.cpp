@@ -45,7 +45,11 @@ PenetrationFilter::PenetrationFilter(const PenetrationFilterParams& params)
       aligner_(params.alignment),
       free_space_(params),
       thin_objects_(params.edge_depth_step, params.thin_object_radius),
-      memory_(params.surface_memory) {}
+      memory_(params.surface_memory),
+      // Every count it sizes is the rescue's evidence: without the rescue
+      // nothing asks, and the noise is not measured.
+      evidence_radius_(params.rescue_radius, params.rescue_persistent_points ? params.evidence_noise_sigmas : 0.0,
+                       params.noise_sampling) {}
 
 void PenetrationFilter::reset() {
   cache_.clear();
@@ -156,6 +160,7 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
     if (!scan.hasReturn(i)) labels[i] = static_cast<std::uint8_t>(PointCode::kNoReturn);
   const Eigen::Vector2d origin = sensorOrigin(scan.pose, sensor.mount);
   resetOnPoseJump(origin, scan.stamp);
+  evidence_radius_.measure(scan, sensor);
   ++frames_seen_;
   expireFrames(scan.stamp);
   // Where the last correction puts the sensor: within the alignment's step.
@@ -277,6 +282,7 @@ PenetrationFilter::Judgement PenetrationFilter::alignAndJudge(const Scan& scan, 
     origin = fit.correction * origin;
     out.correction = fit.correction * correction_;
   }
+  judged_origin_ = origin;
   findSurfaceEnds(scan);
   judgePoints(origin, labels);
   if (params_.free_space_check) markSeenThrough(scan, origin, labels);
@@ -386,8 +392,9 @@ double PenetrationFilter::grazingRun(const Eigen::Vector2d& origin, std::size_t 
 
 int PenetrationFilter::countAround(const PenetrationGrid& grid, const Eigen::Vector2d& p) const {
   const CellIndex c = grid.cellOf(p);
-  const auto reach = static_cast<int>(std::ceil(params_.rescue_radius / grid.cellSize()));
-  const double radius_sq = params_.rescue_radius * params_.rescue_radius;
+  const double radius = evidence_radius_.at((p - judged_origin_).norm());
+  const auto reach = static_cast<int>(std::ceil(radius / grid.cellSize()));
+  const double radius_sq = radius * radius;
   int sum = 0;
   grid.forEachCountedIn({c.x - reach, c.y - reach}, {c.x + reach, c.y + reach},
                         [&](int count, const Eigen::Vector2d& centroid) {
@@ -478,7 +485,7 @@ bool PenetrationFilter::anyCellAlongBeam(const Eigen::Vector2d& origin, const Ei
     const CellIndex hi = grid_.cellOf(a.cwiseMax(b).array() + pad);
     const bool found = cells == CellsThatCount::kObstacles
                            ? grid_.anyObstacleIn(lo, hi, holds)
-                           : grid_.anyCellHoldingIn(lo, hi, params_.obstacle_threshold, holds);
+                           : grid_.anyCellHoldingIn(lo, hi, params_.thin_object_min_returns, holds);
     if (found) return true;
   }
   return false;
@@ -488,10 +495,11 @@ bool PenetrationFilter::objectInFootprint(const Eigen::Vector2d& origin, const E
                                           double angle_step) const {
   const double length = (p - origin).norm();
   if (!(length > 0.0)) return false;
-  // Cells holding obs_th returns count, one fewer than an obstacle needs:
-  // most of a thin leg's returns are mixed and land elsewhere.
+  // Cells holding thin_object_min_returns count (obs_th until Beyond the
+  // paper 32; an obstacle needs more): most of a thin leg's returns are
+  // mixed and land elsewhere, and the cache kept few on the leg itself.
   return anyCellAlongBeam(origin, (p - origin) / length, 0.0, length - thin_objects_.depthStep(), angle_step,
-                          CellsThatCount::kHoldingObsTh, [&](const Eigen::Vector2d& q) {
+                          CellsThatCount::kHoldingThinObjectMin, [&](const Eigen::Vector2d& q) {
                             return thin_objects_.inFootprintInFront(origin, p, q, angle_step);
                           });
 }

@@ -23,11 +23,15 @@ constexpr double kQuarterOctaves[] = {1.189207115002721, 1.414213562373095, 1.68
 }  // namespace
 
 RangeNoiseEstimate::RangeNoiseEstimate(const JumpFilterParams& params)
-    : configured_(noiseModelOf(params)),
+    : RangeNoiseEstimate(noiseModelOf(params), params.noise_sampling, params.d_max) {}
+
+RangeNoiseEstimate::RangeNoiseEstimate(const RangeNoiseModel& floor, const RangeNoiseSampling& sampling,
+                                       double max_range)
+    : configured_(floor),
       model_(configured_),
-      keep_(1.0 - 1.0 / params.noise_estimate_window_scans),
-      min_samples_(params.noise_estimate_min_samples),
-      bands_(std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(params.d_max / kBandWidth))), Histogram{}),
+      keep_(1.0 - 1.0 / sampling.window_scans),
+      min_samples_(sampling.min_samples),
+      bands_(std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(max_range / kBandWidth))), Histogram{}),
       band_weight_(bands_.size(), 0.0) {}
 
 bool RangeNoiseEstimate::residual(const Eigen::Vector2d& a, const Eigen::Vector2d& p, const Eigen::Vector2d& b,

@@ -1,6 +1,8 @@
 #pragma once
 #include <algorithm>
 
+#include "scanfilter/range_noise_sampling.hpp"
+
 namespace scanfilter {
 
 // Which range sets the minimum tangential length l of equation (7). The paper
@@ -32,9 +34,7 @@ struct JumpFilterParams {
   // each measured term replaces the one above when larger. false = the
   // configured model always.
   bool noise_estimate = true;
-  // 1: each scan alone (step 1 keeps no state: a restarted service labels as before).
-  double noise_estimate_window_scans = 1.0;  // scans: an older scan's weight decays by 1 - 1/this a scan
-  double noise_estimate_min_samples = 20.0;  // residuals (decayed) a 1 m range band needs to count
+  RangeNoiseSampling noise_sampling;  // noise_estimate_window_scans, noise_estimate_min_samples
   // Beyond the paper: eq. 5's radius widened by this many σ(range) (the noise
   // model above), so that range noise alone does not split a surface (at
   // 0.1° steps σ exceeds eq. 5's radius from about 1 m). 0 = the paper.

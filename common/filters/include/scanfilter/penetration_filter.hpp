@@ -12,6 +12,7 @@
 #include "scanfilter/beam_bundle.hpp"
 #include "scanfilter/beam_mask.hpp"
 #include "scanfilter/edge_smear_zone.hpp"
+#include "scanfilter/evidence_radius.hpp"
 #include "scanfilter/frame_alignment.hpp"
 #include "scanfilter/free_space_check.hpp"
 #include "scanfilter/implementation.hpp"
@@ -158,7 +159,8 @@ class PenetrationFilter {
   // and `end` would run on past the fringe's reach.
   bool cacheEndsToo(const Eigen::Vector2d& end, const Eigen::Vector2d& inside) const;
   void rescuePersistentPoints(std::span<std::uint8_t> labels);
-  // Returns of `grid` whose cells' means lie within rescue_radius of p.
+  // Returns of `grid` whose cells' means lie within the evidence radius of p
+  // (rescue_radius, or more for a noisy sensor: evidence_radius.hpp).
   int countAround(const PenetrationGrid& grid, const Eigen::Vector2d& p) const;
   // The rescue's evidence there: returns of every label, from the frames it admits.
   int evidenceAround(const Eigen::Vector2d& p) const { return countAround(evidence_, p); }
@@ -198,7 +200,7 @@ class PenetrationFilter {
   bool obstacleBehindInFootprint(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, double angle_step,
                                  double range_max) const;
   // Which cells of grid_ the walks along a beam look at.
-  enum class CellsThatCount { kHoldingObsTh, kObstacles };
+  enum class CellsThatCount { kHoldingThinObjectMin, kObstacles };
   // Whether such a cell, outside the fringes, within the footprint's box
   // from `from` to `to` along the beam from `origin` (unit direction), has a
   // position for which pred(position) holds.
@@ -230,6 +232,10 @@ class PenetrationFilter {
   FreeSpaceCheck free_space_;
   ThinObjectCheck thin_objects_;
   SurfaceMemory memory_;
+  EvidenceRadius evidence_radius_;
+  // The sensor of the frame being judged, where the alignment put it: the
+  // evidence radius grows with a point's distance from it.
+  Eigen::Vector2d judged_origin_ = Eigen::Vector2d::Zero();
   EdgeSmearZone smear_zone_;
   std::vector<Eigen::Vector2d> surface_ends_;  // the frame's ends: smear_zone_'s, and the fast walk's to erase
   // Odometry pose -> the cache's frame: the sum of the frames' alignments

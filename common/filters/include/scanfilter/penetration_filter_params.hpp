@@ -2,6 +2,7 @@
 #include <cstddef>
 
 #include "scanfilter/frame_alignment.hpp"
+#include "scanfilter/range_noise_sampling.hpp"
 #include "scanfilter/surface_memory.hpp"
 
 namespace scanfilter {
@@ -89,6 +90,19 @@ struct PenetrationFilterParams {
   // this distance of the point: a thin leg's returns pile up within a few cm,
   // a jump point lies off every surface by more than that.
   double rescue_radius = 0.08;  // m
+  // Beyond the paper 33 (evidence_radius.hpp): the radius grows to this many
+  // σ(range) of the range noise step 2 measures on the scans (as step 1
+  // does, but the measured model alone, with no configured floor), σ at the
+  // point's distance from the sensor: a noisy sensor's returns of one
+  // surface scatter farther than rescue_radius. Every count within
+  // rescue_radius (the rescue, the free-space veto, the thin-object check's
+  // spare) uses it. 0: rescue_radius at every range.
+  double evidence_noise_sigmas = 5.0;
+  // How step 2 samples the scans for it: window_scans is
+  // evidence_noise_window_scans (step 2 keeps state anyway, and one scan's
+  // estimate swings from scan to scan); min_samples is step 1's
+  // noise_estimate_min_samples, copied by FilterConfig::resolve.
+  RangeNoiseSampling noise_sampling{20.0, RangeNoiseSampling{}.min_samples};
   // Evidence counts only the cached frames seen from at least this far from
   // where the point is seen now (sensor origins, m): a real surface is hit
   // again from elsewhere, a mixed return or a displaced one follows the
@@ -131,8 +145,8 @@ struct PenetrationFilterParams {
   // paper 25): a kept return in a stretch of at most thin_object_max_beams
   // returns standing in front of both sides (by edge_depth_step; the object's
   // own returns and its mixed ones beside them) becomes a jump point when a
-  // cell holding obs_th cached returns (an obstacle needs more) lies on its
-  // beam more than edge_depth_step in front of it, within thin_object_radius
+  // cell holding thin_object_min_returns cached returns lies on its beam
+  // more than edge_depth_step in front of it, within thin_object_radius
   // of the beam's footprint (one angular step wide): the mixed return of an
   // object thinner than the footprint. Not
   // when the rescue would restore it (rescue_min_count returns from
@@ -140,6 +154,12 @@ struct PenetrationFilterParams {
   bool thin_object_check = true;
   int thin_object_max_beams = 3;
   double thin_object_radius = 0.02;  // m
+  // Beyond the paper 32: the returns a cached cell must hold to be that
+  // object (obs_th until 32): a leg thinner than the footprint gives few
+  // returns on itself. The count the filter uses: config/filter.yaml gives it
+  // for obstacle_threshold_reference_deg and FilterConfig::resolve scales it
+  // to the sensor's step, as obs_th.
+  int thin_object_min_returns = 1;
   // Beyond the paper 30: a stretch beside a beam without a return counts
   // too, when a second cached object (an obstacle cell: more than obs_th
   // returns) lies in the footprint behind the return (within the sensor's

@@ -40,7 +40,11 @@ namespace scanfilter {
 // than two bands the configured model stays.
 class RangeNoiseEstimate {
  public:
+  // Step 1's: the configured model as the floor, bands up to d_max.
   explicit RangeNoiseEstimate(const JumpFilterParams& params);
+  // Each fitted term replaces the floor's only when larger (a zero floor:
+  // the measured model alone); 1 m bands from 0 to max_range.
+  RangeNoiseEstimate(const RangeNoiseModel& floor, const RangeNoiseSampling& sampling, double max_range);
 
   // Adds one scan: sensor-frame points (NaN without a return) and ranges; on
   // a full turn the neighbours wrap across the seam. Older scans' weight

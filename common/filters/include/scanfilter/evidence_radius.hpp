@@ -1,0 +1,51 @@
+#pragma once
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "scanfilter/range_noise_estimate.hpp"
+#include "scanfilter/range_noise_sampling.hpp"
+#include "scanfilter/scan.hpp"
+#include "scanfilter/scan_geometry.hpp"
+#include "scanfilter/sensor_info.hpp"
+
+namespace scanfilter {
+
+// Beyond the paper (docs/accuracy.md, Beyond the paper 33): how far around a
+// point step 2 counts the returns that vouch for a surface there (the
+// rescue, the free-space veto, the thin-object check's spare). Returns of one
+// surface scatter along their beams by the range noise: within rescue_radius
+// for the sensor the defaults were chosen with, farther for a noisier one,
+// whose thin legs then found too little evidence and were deleted. So the
+// radius is the larger of rescue_radius and `noise_sigmas` σ(range), with
+// σ(d) = base + quadratic·d² measured on the scans as step 1 measures it
+// (range_noise_estimate.hpp), the measured model alone: step 1's configured
+// model is a floor for its tolerances, and as a floor here it would widen
+// the radius for every sensor (the default's d² term puts 0.4 m of σ at
+// 20 m on a time-of-flight scanner whose noise is 1-2 cm). Until the
+// estimate has two range bands, rescue_radius.
+class EvidenceRadius {
+ public:
+  EvidenceRadius(double floor, double noise_sigmas, const RangeNoiseSampling& sampling);
+
+  // Measures the range noise on one scan (a no-op with noise_sigmas 0).
+  void measure(const Scan& scan, const SensorInfo& sensor);
+  // The radius at `range` m from the sensor.
+  double at(double range) const;
+  // The measured model (zero terms until measured).
+  RangeNoiseModel noise() const { return noise_; }
+
+ private:
+  double floor_;         // m, rescue_radius
+  double noise_sigmas_;  // 0: the floor at every range
+  RangeNoiseSampling sampling_;
+  // Sized for one sensor's range_max; built again when a scan's differs.
+  std::optional<RangeNoiseEstimate> estimate_;
+  double sized_for_ = 0.0;
+  RangeNoiseModel noise_;
+  BeamDirectionTable directions_;
+  std::vector<Eigen::Vector2d> points_;  // sensor frame, reused between scans
+};
+
+}  // namespace scanfilter
