@@ -102,7 +102,7 @@ struct PenetrationFilterParams {
   // evidence_noise_window_scans (step 2 keeps state anyway, and one scan's
   // estimate swings from scan to scan); min_samples is step 1's
   // noise_estimate_min_samples, copied by FilterConfig::resolve.
-  RangeNoiseSampling noise_sampling{20.0, RangeNoiseSampling{}.min_samples};
+  RangeNoiseSampling noise_sampling{.window_scans = 20.0};
   // Evidence counts only the cached frames seen from at least this far from
   // where the point is seen now (sensor origins, m): a real surface is hit
   // again from elsewhere, a mixed return or a displaced one follows the
