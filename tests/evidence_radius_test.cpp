@@ -1,6 +1,8 @@
 // The evidence radius of step 2 (Beyond the paper 33): rescue_radius until
 // the range noise is measured, then the larger of it and k σ(range) of the
 // measured model alone.
+#include <limits>
+
 #include <gtest/gtest.h>
 
 #include "noisy_room.hpp"
@@ -11,18 +13,22 @@ namespace {
 
 constexpr double kFloor = 0.08;  // m, rescue_radius's default
 constexpr double kSigmas = 5.0;
+constexpr double kCap = 1.0;  // m, above anything measured below but the cap's own test
 
 // Smoothed over many scans, so that the figures below are tight.
-RangeNoiseSampling smoothed() { return {200.0, 100.0}; }
+EvidenceRadiusParams params(double sigmas = kSigmas, double cap = kCap) {
+  return {.min_radius = kFloor, .noise_sigmas = sigmas, .max_radius = cap, .sampling = {200.0, 100.0}};
+}
 
-EvidenceRadius measuredOn(const std::vector<Scan>& scans, double sigmas = kSigmas) {
-  EvidenceRadius radius(kFloor, sigmas, smoothed());
-  for (const Scan& scan : scans) radius.measure(scan, test::noisyRoomSensor());
+EvidenceRadius measuredOn(const std::vector<Scan>& scans, const EvidenceRadiusParams& p = params(),
+                          const SensorInfo& sensor = test::noisyRoomSensor()) {
+  EvidenceRadius radius(p);
+  for (const Scan& scan : scans) radius.measure(scan, sensor);
   return radius;
 }
 
 TEST(EvidenceRadius, RescueRadiusUntilTheNoiseIsMeasured) {
-  const EvidenceRadius radius(kFloor, kSigmas, smoothed());
+  const EvidenceRadius radius(params());
   EXPECT_DOUBLE_EQ(radius.at(1.0), kFloor);
   EXPECT_DOUBLE_EQ(radius.at(20.0), kFloor);
 }
@@ -47,9 +53,38 @@ TEST(EvidenceRadius, AQuietSensorKeepsRescueRadius) {
 }
 
 TEST(EvidenceRadius, ZeroSigmasMeasuresNothing) {
-  const EvidenceRadius radius = measuredOn(test::noisyRoomScans(0.006, 0.002, 60), 0.0);
+  const EvidenceRadius radius = measuredOn(test::noisyRoomScans(0.006, 0.002, 60), params(0.0));
   EXPECT_EQ(radius.noise(), (RangeNoiseModel{}));
   EXPECT_DOUBLE_EQ(radius.at(6.0), kFloor);
+}
+
+TEST(EvidenceRadius, GrowsNoFartherThanTheCap) {
+  const EvidenceRadius radius = measuredOn(test::noisyRoomScans(0.006, 0.002, 60), params(kSigmas, 0.3));
+  EXPECT_DOUBLE_EQ(radius.at(6.0), 0.3) << "5 sigma is 0.39 m there";
+  EXPECT_DOUBLE_EQ(radius.at(100.0), 0.3);
+  EXPECT_LT(radius.at(3.0), 0.3);
+}
+
+// Without a finite positive range_max there are no bands to measure in:
+// rescue_radius, and no fault (a NaN range_max once sized the bands from NaN).
+TEST(EvidenceRadius, ASensorWithoutAFiniteRangeKeepsRescueRadius) {
+  for (double range_max : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(), 0.0}) {
+    SensorInfo sensor = test::noisyRoomSensor();
+    sensor.range_max = range_max;
+    const EvidenceRadius radius = measuredOn(test::noisyRoomScans(0.006, 0.002, 10), params(), sensor);
+    EXPECT_DOUBLE_EQ(radius.at(6.0), kFloor) << range_max;
+  }
+}
+
+// A sensor whose range_max changes gets bands for the new range.
+TEST(EvidenceRadius, ANewRangeMaxResizesTheBands) {
+  EvidenceRadius radius(params());
+  SensorInfo short_range = test::noisyRoomSensor();
+  short_range.range_max = 2.0;  // one band reached: the estimate cannot fit
+  for (const Scan& scan : test::noisyRoomScans(0.006, 0.002, 20)) radius.measure(scan, short_range);
+  EXPECT_DOUBLE_EQ(radius.at(6.0), kFloor);
+  for (const Scan& scan : test::noisyRoomScans(0.006, 0.002, 60)) radius.measure(scan, test::noisyRoomSensor());
+  EXPECT_GT(radius.at(6.0), kFloor);
 }
 
 }  // namespace

@@ -50,8 +50,9 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(s.penetration.rescue_min_count, d.penetration.rescue_min_count);
   EXPECT_EQ(s.penetration.rescue_radius, d.penetration.rescue_radius);
   EXPECT_EQ(s.penetration.evidence_noise_sigmas, d.penetration.evidence_noise_sigmas);
-  EXPECT_EQ(s.penetration.noise_sampling.window_scans, d.penetration.noise_sampling.window_scans);
-  EXPECT_EQ(s.penetration.noise_sampling.min_samples, d.penetration.noise_sampling.min_samples);
+  EXPECT_EQ(s.penetration.evidence_radius_max, d.penetration.evidence_radius_max);
+  EXPECT_EQ(s.penetration.evidence_noise_sampling.window_scans, d.penetration.evidence_noise_sampling.window_scans);
+  EXPECT_EQ(s.penetration.evidence_noise_sampling.min_samples, d.penetration.evidence_noise_sampling.min_samples);
   EXPECT_EQ(s.penetration.edge_vote_margin_deg, d.penetration.edge_vote_margin_deg);
   EXPECT_EQ(s.penetration.edge_depth_step, d.penetration.edge_depth_step);
   EXPECT_EQ(s.penetration.free_space_check, d.penetration.free_space_check);
@@ -142,8 +143,8 @@ TEST(FilterConfig, StepTwoSamplesTheNoiseWithStepOnesMinimum) {
       "penetration_filter:\n  evidence_noise_window_scans: 7\n  evidence_noise_sigmas: 3\n",
       "f.yaml");
   const PenetrationFilterParams p = c.resolve(SensorInfo{}).penetration;
-  EXPECT_DOUBLE_EQ(p.noise_sampling.min_samples, 50.0);
-  EXPECT_DOUBLE_EQ(p.noise_sampling.window_scans, 7.0);
+  EXPECT_DOUBLE_EQ(p.evidence_noise_sampling.min_samples, 50.0);
+  EXPECT_DOUBLE_EQ(p.evidence_noise_sampling.window_scans, 7.0);
   EXPECT_DOUBLE_EQ(p.evidence_noise_sigmas, 3.0);
 }
 

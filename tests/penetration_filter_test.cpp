@@ -534,10 +534,14 @@ TEST(PenetrationFilter, RescueRestoresPersistentJumpPoints) {
 
 // Beyond the paper 33: a noisy sensor scatters a leg's returns farther than
 // rescue_radius, so the evidence radius grows with the range noise step 2
-// measures. The room's walls carry 6 cm of noise (5σ: 0.3 m); the leg's
-// returns of the earlier frames lie 12 cm beyond the last one's. Returns
-// the leg's label in the last frame, the same from both implementations.
-std::uint8_t scatteredLegLabel(double evidence_noise_sigmas) {
+// measures at the leg's range. The room (its centre 50 m from the world's
+// origin, so that a range taken from the wrong point shows; the sensor 0.5
+// m from one wall and 5.5 m from the other, so that the estimate sees the
+// noise grow) carries noise of 2 mm + 5 mm/m²: 5σ is 3.5 cm at 1 m
+// (rescue_radius's 8 cm holds) and 24 cm at 3 m. The leg's returns of the
+// earlier frames lie 12 cm beyond its last one. Returns the leg's label in
+// the last frame, the same from both implementations.
+std::uint8_t scatteredLegLabel(double evidence_noise_sigmas, double leg_range) {
   const SensorInfo sensor = test::simpleSensor();
   PenetrationFilterParams p;
   p.rescue_min_baseline = 0.0;  // every cached frame vouches (the baseline: the test below)
@@ -545,18 +549,25 @@ std::uint8_t scatteredLegLabel(double evidence_noise_sigmas) {
   p.free_space_check = false;   // the rescue alone decides
   p.surface_memory.lifetime = 0.0;
   BothFilters filters(p);
-  constexpr double kWallNoise = 0.06, kScatter = 0.12;  // m
+  constexpr double kBase = 0.002, kQuadratic = 0.005, kScatter = 0.12;  // m, m per m², m
+  const Eigen::Vector2d centre(50.0, 50.0);
+  const Eigen::Vector2d sensor_at = centre + Eigen::Vector2d(-2.5, 0.0);
+  World room;
+  for (const auto& [a, b] : {std::pair{Eigen::Vector2d(3, -3), Eigen::Vector2d(3, 3)}, {{-3, -3}, {3, -3}},
+                             {{-3, 3}, {3, 3}}, {{-3, -3}, {-3, 3}}})
+    room.wall(centre + a, centre + b);
+  room.leg(sensor_at + Eigen::Vector2d(leg_range, 0.0), 0.015);
   std::mt19937 rng(5);
   std::normal_distribution<double> normal;
-  const World legs = World{kRoom}.leg({1.0, 0.0}, 0.015);
   std::vector<std::uint8_t> labels;
   std::size_t leg = 0;
   constexpr int kFrames = 12;
   for (int k = 0; k < kFrames; ++k) {
-    Scan scan = castScan(legs, {-0.01 * k, 0.0, 0.0}, sensor, 360, 0.1 * k);
+    Scan scan = castScan(room, {sensor_at.x() + 0.01 * k, sensor_at.y(), 0.0}, sensor, 360, 0.1 * k);
     leg = test::beamTowards(scan, sensor, 0.0);
-    for (double& r : scan.ranges)
-      if (std::isfinite(r) && r > 1.5) r += kWallNoise * normal(rng);
+    for (std::size_t i = 0; i < scan.size(); ++i)
+      if (i != leg && std::isfinite(scan.ranges[i]))
+        scan.ranges[i] += (kBase + kQuadratic * scan.ranges[i] * scan.ranges[i]) * normal(rng);
     if (k < kFrames - 1) scan.ranges[leg] += kScatter;
     labels.assign(scan.size(), kValid);
     for (std::size_t i = 0; i < scan.size(); ++i)
@@ -568,9 +579,10 @@ std::uint8_t scatteredLegLabel(double evidence_noise_sigmas) {
 }
 
 TEST(PenetrationFilter, TheRescuesReachFollowsTheMeasuredRangeNoise) {
-  EXPECT_EQ(scatteredLegLabel(5.0), kValid) << "the scattered returns lie within 5 sigma of it";
-  EXPECT_EQ(scatteredLegLabel(0.0), static_cast<std::uint8_t>(PointCode::kJump))
-      << "12 cm is beyond rescue_radius (8 cm)";
+  constexpr auto kJump = static_cast<std::uint8_t>(PointCode::kJump);
+  EXPECT_EQ(scatteredLegLabel(5.0, 3.0), kValid) << "at 3 m the scattered returns lie within 5 sigma";
+  EXPECT_EQ(scatteredLegLabel(5.0, 1.0), kJump) << "at 1 m 5 sigma is less than rescue_radius, and 12 cm beyond it";
+  EXPECT_EQ(scatteredLegLabel(0.0, 3.0), kJump) << "with the key at 0, rescue_radius (8 cm) at every range";
 }
 
 // A leg 1 m ahead of the first pose that step 1 calls jump in every frame

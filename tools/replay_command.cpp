@@ -54,6 +54,12 @@ int runReplay(const ReplayOptions& options) {
               << " mm + " << 1e3 * noise.quadratic << " mm/m^2 * d^2"
               << (config.params.jump.noise_estimate ? " (each term the larger of measured and configured)" : "")
               << "\n";
+    if (config.params.penetration_enabled && config.params.penetration.rescue_persistent_points &&
+        config.params.penetration.evidence_noise_sigmas > 0.0) {
+      const RangeNoiseModel measured = filter.penetration().evidenceNoise();
+      std::cout << "step 2 range noise (evidence radius; measured alone): sigma(d) = " << 1e3 * measured.base
+                << " mm + " << 1e3 * measured.quadratic << " mm/m^2 * d^2\n";
+    }
     std::cout.flags(flags);
     std::cout.precision(precision);
   }

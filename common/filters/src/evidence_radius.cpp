@@ -1,20 +1,22 @@
 #include "scanfilter/evidence_radius.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "scanfilter/plausible_bounds.hpp"
 
 namespace scanfilter {
 
-EvidenceRadius::EvidenceRadius(double floor, double noise_sigmas, const RangeNoiseSampling& sampling)
-    : floor_(floor), noise_sigmas_(noise_sigmas), sampling_(sampling) {}
+EvidenceRadius::EvidenceRadius(const EvidenceRadiusParams& params) : params_(params) {}
 
 void EvidenceRadius::measure(const Scan& scan, const SensorInfo& sensor) {
-  if (!(noise_sigmas_ > 0.0)) return;
-  // A sensor without a finite range still has its returns within plausible bounds.
+  if (!(params_.noise_sigmas > 0.0)) return;
+  // The estimate's bands run from the sensor to its range_max: without a
+  // finite positive one there is nothing to size them by (NaN fails both).
+  if (!(std::isfinite(sensor.range_max) && sensor.range_max > 0.0)) return;
   const double max_range = std::min(sensor.range_max, kMaxPlausibleRange);
   if (!estimate_ || max_range != sized_for_) {
-    estimate_.emplace(RangeNoiseModel{}, sampling_, max_range);
+    estimate_.emplace(RangeNoiseModel{}, params_.sampling, max_range);
     sized_for_ = max_range;
   }
   sensorFramePoints(scan, sensor, directions_, points_);
@@ -23,7 +25,8 @@ void EvidenceRadius::measure(const Scan& scan, const SensorInfo& sensor) {
 }
 
 double EvidenceRadius::at(double range) const {
-  return std::max(floor_, noise_sigmas_ * (noise_.base + noise_.quadratic * range * range));
+  const double noise_reach = params_.noise_sigmas * (noise_.base + noise_.quadratic * range * range);
+  return std::clamp(noise_reach, params_.min_radius, std::max(params_.min_radius, params_.max_radius));
 }
 
 }  // namespace scanfilter

@@ -194,7 +194,8 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.read("rescue_min_count", p.rescue_min_count);
   s.read("rescue_radius", p.rescue_radius);
   s.read("evidence_noise_sigmas", p.evidence_noise_sigmas);
-  s.read("evidence_noise_window_scans", p.noise_sampling.window_scans);
+  s.read("evidence_noise_window_scans", p.evidence_noise_sampling.window_scans);
+  s.read("evidence_radius_max", p.evidence_radius_max);
   s.read("rescue_min_baseline", p.rescue_min_baseline);
   s.read("free_space_check", p.free_space_check);
   s.read("free_space_margin", p.free_space_margin);
@@ -229,7 +230,9 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.requireRange("rescue_min_count", p.rescue_min_count, 1, 1e9, "an integer >= 1");
   s.requireRange("rescue_radius", p.rescue_radius, 0.0, 1.0, "0 <= value <= 1 (m)");
   s.requireRange("evidence_noise_sigmas", p.evidence_noise_sigmas, 0.0, 100.0, "0 <= value <= 100 (0: off)");
-  s.requireRange("evidence_noise_window_scans", p.noise_sampling.window_scans, 1.0, 1e6, "1-1e6 (scans)");
+  s.requireRange("evidence_noise_window_scans", p.evidence_noise_sampling.window_scans, 1.0, 1e6, "1-1e6 (scans)");
+  s.requireRange("evidence_radius_max", p.evidence_radius_max, p.rescue_radius, 10.0,
+                 "rescue_radius <= value <= 10 (m)");
   s.requireRange("rescue_min_baseline", p.rescue_min_baseline, 0.0, 100.0, "0 <= value <= 100 (m; 0: off)");
   s.requireRange("edge_vote_margin_deg", p.edge_vote_margin_deg, 0.0, 45.0, "0 <= value <= 45 (degrees; 0: off)");
   s.requireRange("edge_depth_step", p.edge_depth_step, 0.0, 10.0, "0 <= value <= 10 (m)");
@@ -302,7 +305,7 @@ TwoStepFilterParams FilterConfig::resolve(const SensorInfo& sensor) const {
   PenetrationFilterParams& p = out.penetration;
   // Step 2 measures the range noise as step 1 does, over its own window
   // (evidence_radius.hpp).
-  p.noise_sampling.min_samples = out.jump.noise_sampling.min_samples;
+  p.evidence_noise_sampling.min_samples = out.jump.noise_sampling.min_samples;
   if (obstacle_threshold_reference_deg > 0.0) {
     const double beams = beamsPerReferenceStep(obstacle_threshold_reference_deg, out.jump);
     p.obstacle_threshold = scaledCount(p.obstacle_threshold, beams, 0);

@@ -48,8 +48,10 @@ PenetrationFilter::PenetrationFilter(const PenetrationFilterParams& params)
       memory_(params.surface_memory),
       // Every count it sizes is the rescue's evidence: without the rescue
       // nothing asks, and the noise is not measured.
-      evidence_radius_(params.rescue_radius, params.rescue_persistent_points ? params.evidence_noise_sigmas : 0.0,
-                       params.noise_sampling) {}
+      evidence_radius_({.min_radius = params.rescue_radius,
+                        .noise_sigmas = params.rescue_persistent_points ? params.evidence_noise_sigmas : 0.0,
+                        .max_radius = params.evidence_radius_max,
+                        .sampling = params.evidence_noise_sampling}) {}
 
 void PenetrationFilter::reset() {
   cache_.clear();
@@ -282,7 +284,6 @@ PenetrationFilter::Judgement PenetrationFilter::alignAndJudge(const Scan& scan, 
     origin = fit.correction * origin;
     out.correction = fit.correction * correction_;
   }
-  judged_origin_ = origin;
   findSurfaceEnds(scan);
   judgePoints(origin, labels);
   if (params_.free_space_check) markSeenThrough(scan, origin, labels);
@@ -341,7 +342,7 @@ bool PenetrationFilter::cacheEndsToo(const Eigen::Vector2d& end, const Eigen::Ve
 }
 
 void PenetrationFilter::judgePoints(const Eigen::Vector2d& origin, std::span<std::uint8_t> labels) {
-  if (params_.rescue_persistent_points) rescuePersistentPoints(labels);
+  if (params_.rescue_persistent_points) rescuePersistentPoints(origin, labels);
   prepareJudging(origin);
   markMisdetected(origin, labels);
 }
@@ -390,9 +391,10 @@ double PenetrationFilter::grazingRun(const Eigen::Vector2d& origin, std::size_t 
   return params_.straddle_half_width * along / across;
 }
 
-int PenetrationFilter::countAround(const PenetrationGrid& grid, const Eigen::Vector2d& p) const {
+int PenetrationFilter::countAround(const PenetrationGrid& grid, const Eigen::Vector2d& p,
+                                   const Eigen::Vector2d& origin) const {
   const CellIndex c = grid.cellOf(p);
-  const double radius = evidence_radius_.at((p - judged_origin_).norm());
+  const double radius = evidence_radius_.at((p - origin).norm());
   const auto reach = static_cast<int>(std::ceil(radius / grid.cellSize()));
   const double radius_sq = radius * radius;
   int sum = 0;
@@ -403,19 +405,19 @@ int PenetrationFilter::countAround(const PenetrationGrid& grid, const Eigen::Vec
   return sum;
 }
 
-bool PenetrationFilter::thinObjectStandsAt(const Eigen::Vector2d& p) const {
-  if (!params_.rescue_persistent_points || evidenceAround(p) < params_.rescue_min_count) return false;
+bool PenetrationFilter::thinObjectStandsAt(const Eigen::Vector2d& p, const Eigen::Vector2d& origin) const {
+  if (!params_.rescue_persistent_points || evidenceAround(p, origin) < params_.rescue_min_count) return false;
   // Other frames' mixed returns of the same leg land near a mixed return
   // too, and most of them were removed in their own frames; a real object's
   // returns were kept there (docs/accuracy.md, 31).
-  return !params_.thin_object_evidence_kept || keptReturnsAround(p) >= params_.rescue_min_count;
+  return !params_.thin_object_evidence_kept || keptReturnsAround(p, origin) >= params_.rescue_min_count;
 }
 
-void PenetrationFilter::rescuePersistentPoints(std::span<std::uint8_t> labels) {
+void PenetrationFilter::rescuePersistentPoints(const Eigen::Vector2d& origin, std::span<std::uint8_t> labels) {
   // The evidence holds only earlier frames, so a point cannot vouch for itself.
   for (std::size_t i = 0; i < labels.size(); ++i) {
     if (labels[i] != static_cast<std::uint8_t>(PointCode::kJump)) continue;
-    if (evidenceAround(points_[i]) >= params_.rescue_min_count)
+    if (evidenceAround(points_[i], origin) >= params_.rescue_min_count)
       labels[i] = static_cast<std::uint8_t>(PointCode::kValid);
   }
 }
@@ -430,7 +432,8 @@ void PenetrationFilter::markSeenThrough(const Scan& scan, const Eigen::Vector2d&
     if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid) || !candidate[i]) continue;
     // A return the rescue's evidence (returns of frames from elsewhere)
     // vouches for is on a surface.
-    if (params_.rescue_persistent_points && evidenceAround(points_[i]) >= params_.free_space_veto_count) continue;
+    if (params_.rescue_persistent_points && evidenceAround(points_[i], origin) >= params_.free_space_veto_count)
+      continue;
     int through = 0, hits = 0;
     for (const CachedFrame& frame : cache_) {
       assert(frame.image);  // cached with the check on, as every frame is
@@ -455,7 +458,7 @@ void PenetrationFilter::markMixedReturnsOfThinObjects(const Scan& scan, const Ei
     // A return that returns from elsewhere vouch for (the rescue's evidence,
     // and as many of the cache's kept returns) is an object there: the rear
     // leg of a chair, partly behind a front one.
-    if (thinObjectStandsAt(points_[i])) continue;
+    if (thinObjectStandsAt(points_[i], origin)) continue;
     if (!objectInFootprint(origin, points_[i], angle_step)) continue;
     // With nothing within range beside it, the rest of the footprint found
     // no background there: a mix needs a second object behind the return.
@@ -499,7 +502,7 @@ bool PenetrationFilter::objectInFootprint(const Eigen::Vector2d& origin, const E
   // paper 32; an obstacle needs more): most of a thin leg's returns are
   // mixed and land elsewhere, and the cache kept few on the leg itself.
   return anyCellAlongBeam(origin, (p - origin) / length, 0.0, length - thin_objects_.depthStep(), angle_step,
-                          CellsThatCount::kHoldingThinObjectMin, [&](const Eigen::Vector2d& q) {
+                          CellsThatCount::kThinObjectCells, [&](const Eigen::Vector2d& q) {
                             return thin_objects_.inFootprintInFront(origin, p, q, angle_step);
                           });
 }

@@ -12,22 +12,35 @@
 
 namespace scanfilter {
 
+// How far around a point step 2 counts returns from elsewhere
+// (PenetrationFilterParams: rescue_radius, evidence_noise_*).
+// The defaults are PenetrationFilterParams'.
+struct EvidenceRadiusParams {
+  double min_radius = 0.0;      // m, rescue_radius: the radius wherever the noise is smaller
+  double noise_sigmas = 0.0;    // the radius is at least this many σ(range); 0: min_radius everywhere
+  double max_radius = 0.0;      // m, and at most this (at least min_radius)
+  RangeNoiseSampling sampling;  // how the noise is measured
+};
+
 // Beyond the paper (docs/accuracy.md, Beyond the paper 33): how far around a
 // point step 2 counts the returns that vouch for a surface there (the
 // rescue, the free-space veto, the thin-object check's spare). Returns of one
 // surface scatter along their beams by the range noise: within rescue_radius
 // for the sensor the defaults were chosen with, farther for a noisier one,
 // whose thin legs then found too little evidence and were deleted. So the
-// radius is the larger of rescue_radius and `noise_sigmas` σ(range), with
-// σ(d) = base + quadratic·d² measured on the scans as step 1 measures it
+// radius is `noise_sigmas` σ(range) where that is more than min_radius, up
+// to max_radius (beyond it the count would reach across the depth edges the
+// checks look at, and cost more cells than it is worth), with σ(d) = base +
+// quadratic·d² measured on the scans as step 1 measures it
 // (range_noise_estimate.hpp), the measured model alone: step 1's configured
-// model is a floor for its tolerances, and as a floor here it would widen
-// the radius for every sensor (the default's d² term puts 0.4 m of σ at
-// 20 m on a time-of-flight scanner whose noise is 1-2 cm). Until the
-// estimate has two range bands, rescue_radius.
+// model is only a floor for its own tolerances, and as a floor here its d²
+// term would widen the radius for every sensor (0.4 m of σ at 20 m on a
+// time-of-flight scanner whose noise is 1-2 cm). Until the estimate has two
+// range bands, and for a sensor without a finite positive range_max (no
+// bands to measure in), min_radius.
 class EvidenceRadius {
  public:
-  EvidenceRadius(double floor, double noise_sigmas, const RangeNoiseSampling& sampling);
+  explicit EvidenceRadius(const EvidenceRadiusParams& params);
 
   // Measures the range noise on one scan (a no-op with noise_sigmas 0).
   void measure(const Scan& scan, const SensorInfo& sensor);
@@ -37,9 +50,7 @@ class EvidenceRadius {
   RangeNoiseModel noise() const { return noise_; }
 
  private:
-  double floor_;         // m, rescue_radius
-  double noise_sigmas_;  // 0: the floor at every range
-  RangeNoiseSampling sampling_;
+  EvidenceRadiusParams params_;
   // Sized for one sensor's range_max; built again when a scan's differs.
   std::optional<RangeNoiseEstimate> estimate_;
   double sized_for_ = 0.0;

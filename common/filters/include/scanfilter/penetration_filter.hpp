@@ -50,17 +50,21 @@ class PenetrationFilter {
   // Judges `scan` against the current grid (aligned to it first, when
   // alignment is on) without changing any state: no cache update, no expiry,
   // no warm-up count, nothing remembered or forgotten. apply() is reset
-  // check, expiry (of the cache and of the surface memory, where the sensor
-  // drove through a remembered surface too), judge(), remembering and
-  // caching: judge() ignores expired surfaces but not driven-through ones.
+  // check, the range noise measured (evidence_radius.hpp), expiry (of the
+  // cache and of the surface memory, where the sensor drove through a
+  // remembered surface too), judge(), remembering and caching: judge()
+  // ignores expired surfaces but not driven-through ones.
   void judge(const Scan& scan, const SensorInfo& sensor, std::span<std::uint8_t> labels);
 
-  // Forget every cached frame and start the warm-up again.
+  // Forget every cached frame and start the warm-up again (the measured
+  // range noise stays: it is the sensor's, not the cache's).
   void reset();
 
   const PenetrationGrid& grid() const { return grid_; }
   // The returns the rescue counts (rescue_persistent_points).
   const PenetrationGrid& rescueEvidence() const { return evidence_; }
+  // The range noise measured for the evidence radius (zero until measured).
+  RangeNoiseModel evidenceNoise() const { return evidence_radius_.noise(); }
   const PenetrationFilterParams& params() const { return params_; }
   std::size_t framesSinceReset() const { return frames_seen_; }
   std::size_t cachedFrames() const { return cache_.size(); }
@@ -158,18 +162,23 @@ class PenetrationFilter {
   // Whether the cache holds no obstacle where the surface through `inside`
   // and `end` would run on past the fringe's reach.
   bool cacheEndsToo(const Eigen::Vector2d& end, const Eigen::Vector2d& inside) const;
-  void rescuePersistentPoints(std::span<std::uint8_t> labels);
-  // Returns of `grid` whose cells' means lie within the evidence radius of p
-  // (rescue_radius, or more for a noisy sensor: evidence_radius.hpp).
-  int countAround(const PenetrationGrid& grid, const Eigen::Vector2d& p) const;
+  void rescuePersistentPoints(const Eigen::Vector2d& origin, std::span<std::uint8_t> labels);
+  // Returns of `grid` whose cells' means lie within the evidence radius of
+  // p, seen from the sensor at `origin` (rescue_radius, or more for a noisy
+  // sensor at p's range: evidence_radius.hpp).
+  int countAround(const PenetrationGrid& grid, const Eigen::Vector2d& p, const Eigen::Vector2d& origin) const;
   // The rescue's evidence there: returns of every label, from the frames it admits.
-  int evidenceAround(const Eigen::Vector2d& p) const { return countAround(evidence_, p); }
+  int evidenceAround(const Eigen::Vector2d& p, const Eigen::Vector2d& origin) const {
+    return countAround(evidence_, p, origin);
+  }
   // The cache's kept returns there (grid_'s votes), from every cached frame.
-  int keptReturnsAround(const Eigen::Vector2d& p) const { return countAround(grid_, p); }
+  int keptReturnsAround(const Eigen::Vector2d& p, const Eigen::Vector2d& origin) const {
+    return countAround(grid_, p, origin);
+  }
   // thin_object_check: whether returns from elsewhere say an object stands
   // at p (the rescue's evidence holds rescue_min_count returns, and with
   // thin_object_evidence_kept as many kept returns of the cache lie there).
-  bool thinObjectStandsAt(const Eigen::Vector2d& p) const;
+  bool thinObjectStandsAt(const Eigen::Vector2d& p, const Eigen::Vector2d& origin) const;
   void resetOnPoseJump(const Eigen::Vector2d& origin, Stamp stamp);
   void dropOldestFrame();
   // Drops the cached frames older than T_max at `stamp`.
@@ -190,7 +199,7 @@ class PenetrationFilter {
   // within `range_max` of the sensor.
   void markMixedReturnsOfThinObjects(const Scan& scan, const Eigen::Vector2d& origin, double range_max,
                                      std::span<std::uint8_t> labels) const;
-  // Whether a cell holding obs_th returns (outside the frame's edge fringes)
+  // Whether a cell holding thin_object_min_returns (outside the frame's edge fringes)
   // puts an object in the footprint of the beam from `origin` to p, in front
   // of p.
   bool objectInFootprint(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, double angle_step) const;
@@ -200,7 +209,7 @@ class PenetrationFilter {
   bool obstacleBehindInFootprint(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, double angle_step,
                                  double range_max) const;
   // Which cells of grid_ the walks along a beam look at.
-  enum class CellsThatCount { kHoldingThinObjectMin, kObstacles };
+  enum class CellsThatCount { kThinObjectCells, kObstacles };
   // Whether such a cell, outside the fringes, within the footprint's box
   // from `from` to `to` along the beam from `origin` (unit direction), has a
   // position for which pred(position) holds.
@@ -232,10 +241,8 @@ class PenetrationFilter {
   FreeSpaceCheck free_space_;
   ThinObjectCheck thin_objects_;
   SurfaceMemory memory_;
+  // Measured on every scan; kept across resets (the sensor's noise does not change with the cache).
   EvidenceRadius evidence_radius_;
-  // The sensor of the frame being judged, where the alignment put it: the
-  // evidence radius grows with a point's distance from it.
-  Eigen::Vector2d judged_origin_ = Eigen::Vector2d::Zero();
   EdgeSmearZone smear_zone_;
   std::vector<Eigen::Vector2d> surface_ends_;  // the frame's ends: smear_zone_'s, and the fast walk's to erase
   // Odometry pose -> the cache's frame: the sum of the frames' alignments

@@ -88,7 +88,9 @@ struct PenetrationFilterParams {
   int rescue_min_count = 5;
   // Evidence counts the cached returns of the cells whose centroid lies within
   // this distance of the point: a thin leg's returns pile up within a few cm,
-  // a jump point lies off every surface by more than that.
+  // a jump point lies off every surface by more than that. At least this:
+  // more where the measured range noise is larger (below); "within
+  // rescue_radius" below means this radius.
   double rescue_radius = 0.08;  // m
   // Beyond the paper 33 (evidence_radius.hpp): the radius grows to this many
   // σ(range) of the range noise step 2 measures on the scans (as step 1
@@ -98,11 +100,14 @@ struct PenetrationFilterParams {
   // rescue_radius (the rescue, the free-space veto, the thin-object check's
   // spare) uses it. 0: rescue_radius at every range.
   double evidence_noise_sigmas = 5.0;
+  // ... up to this (m): farther, the counts would reach across the depth
+  // edges the checks look at (edge_depth_step) and visit many more cells.
+  double evidence_radius_max = 0.30;
   // How step 2 samples the scans for it: window_scans is
   // evidence_noise_window_scans (step 2 keeps state anyway, and one scan's
   // estimate swings from scan to scan); min_samples is step 1's
   // noise_estimate_min_samples, copied by FilterConfig::resolve.
-  RangeNoiseSampling noise_sampling{.window_scans = 20.0};
+  RangeNoiseSampling evidence_noise_sampling{.window_scans = 20.0};
   // Evidence counts only the cached frames seen from at least this far from
   // where the point is seen now (sensor origins, m): a real surface is hit
   // again from elsewhere, a mixed return or a displaced one follows the

@@ -31,13 +31,14 @@ namespace scanfilter {
 // (weighted least squares, both terms >= 0, a second pass without the bands
 // far off the first).
 //
-// Each fitted term replaces the configured one only when larger: the
-// estimate widens step 1's tolerances for a noisier sensor and never narrows
-// them. Narrowing was measured and not kept (docs/accuracy.md, Beyond the
+// Each fitted term replaces the configured one (the floor) only when
+// larger: the estimate widens step 1's tolerances for a noisier sensor and
+// never narrows them. Narrowing was measured and not kept (docs/accuracy.md, Beyond the
 // paper 18): on the real SICK logs the default's wide far tolerance also
 // absorbs what is not noise (clutter that is not a straight line at 1°), and
 // narrowing it removed more returns seen again from elsewhere. With fewer
-// than two bands the configured model stays.
+// than two bands the configured model stays. Step 2 measures with a zero
+// floor: the measured model alone (evidence_radius.hpp).
 class RangeNoiseEstimate {
  public:
   // Step 1's: the configured model as the floor, bands up to d_max.
@@ -48,11 +49,11 @@ class RangeNoiseEstimate {
 
   // Adds one scan: sensor-frame points (NaN without a return) and ranges; on
   // a full turn the neighbours wrap across the seam. Older scans' weight
-  // decays by 1 - 1/noise_estimate_window_scans a scan.
+  // decays by 1 - 1/sampling.window_scans a scan.
   void add(std::span<const Eigen::Vector2d> points, std::span<const double> ranges, bool full_turn);
 
-  // The model step 1 uses: per term the larger of the fitted and the
-  // configured one; the configured one until two bands hold enough samples.
+  // Per term the larger of the fitted one and the floor's (step 1: the
+  // configured model); the floor until two bands hold enough samples.
   RangeNoiseModel model() const { return model_; }
 
   // The range noise of one band (its median residual / sqrt(1.5) · 1.4826), or 0 with too few samples.

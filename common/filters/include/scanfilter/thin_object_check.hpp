@@ -17,8 +17,9 @@ namespace scanfilter {
 // own returns, in front of the background on both sides, far from any
 // surface. A real thin leg looks the same in one scan, so step 1 keeps it
 // (keep_foreground_clusters). The cache tells them apart: when a cell of it
-// holding obs_th returns (one fewer than an obstacle needs: most of a thin
-// leg's returns are mixed and land elsewhere) puts an object on the beam,
+// holding thin_object_min_returns (1 at 1°; fewer than an obstacle needs:
+// most of a thin leg's returns are mixed and land elsewhere, Beyond the
+// paper 32) puts an object on the beam,
 // more than a depth step in front of the return and close enough to the
 // beam's axis to lie in its footprint, the beam's light came partly from
 // that object, and the return lies where nothing is. Step 2 spares a return
