@@ -63,6 +63,8 @@ TEST(EvidenceRadius, GrowsNoFartherThanTheCap) {
   EXPECT_DOUBLE_EQ(radius.at(6.0), 0.3) << "5 sigma is 0.39 m there";
   EXPECT_DOUBLE_EQ(radius.at(100.0), 0.3);
   EXPECT_LT(radius.at(3.0), 0.3);
+  const EvidenceRadius below = measuredOn(test::noisyRoomScans(0.006, 0.002, 60), params(kSigmas, 0.05));
+  EXPECT_DOUBLE_EQ(below.at(6.0), kFloor) << "a cap below rescue_radius changes nothing";
 }
 
 // Without a finite positive range_max there are no bands to measure in:

@@ -242,6 +242,10 @@ TEST(FilterConfigErrors, NameFileLineAndKey) {
             "f.yaml:2: penetration_filter.evidence_noise_sigmas: expected 0 <= value <= 100 (0: off)");
   EXPECT_EQ(errorOf("penetration_filter:\n  evidence_noise_window_scans: 0.5\n"),
             "f.yaml:2: penetration_filter.evidence_noise_window_scans: expected 1-1e6 (scans)");
+  EXPECT_EQ(errorOf("penetration_filter:\n  evidence_radius_max: 11\n"),
+            "f.yaml:2: penetration_filter.evidence_radius_max: expected 0 <= value <= 10 (m)");
+  EXPECT_EQ(errorOf("penetration_filter:\n  rescue_radius: 0.5\n"), "no error")
+      << "a rescue_radius above evidence_radius_max is the radius everywhere";
   EXPECT_EQ(errorOf("penetration_filter:\n  obstacle_at_centroid: false\n"),
             "f.yaml:2: penetration_filter.require_surface_extent: needs obstacle_at_centroid: true (or set "
             "require_surface_extent: false for cell centres)");

@@ -231,8 +231,9 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.requireRange("rescue_radius", p.rescue_radius, 0.0, 1.0, "0 <= value <= 1 (m)");
   s.requireRange("evidence_noise_sigmas", p.evidence_noise_sigmas, 0.0, 100.0, "0 <= value <= 100 (0: off)");
   s.requireRange("evidence_noise_window_scans", p.evidence_noise_sampling.window_scans, 1.0, 1e6, "1-1e6 (scans)");
-  s.requireRange("evidence_radius_max", p.evidence_radius_max, p.rescue_radius, 10.0,
-                 "rescue_radius <= value <= 10 (m)");
+  // Below rescue_radius it changes nothing (the radius is never less), so a
+  // larger rescue_radius alone stays a valid config.
+  s.requireRange("evidence_radius_max", p.evidence_radius_max, 0.0, 10.0, "0 <= value <= 10 (m)");
   s.requireRange("rescue_min_baseline", p.rescue_min_baseline, 0.0, 100.0, "0 <= value <= 100 (m; 0: off)");
   s.requireRange("edge_vote_margin_deg", p.edge_vote_margin_deg, 0.0, 45.0, "0 <= value <= 45 (degrees; 0: off)");
   s.requireRange("edge_depth_step", p.edge_depth_step, 0.0, 10.0, "0 <= value <= 10 (m)");

@@ -102,6 +102,7 @@ struct PenetrationFilterParams {
   double evidence_noise_sigmas = 5.0;
   // ... up to this (m): farther, the counts would reach across the depth
   // edges the checks look at (edge_depth_step) and visit many more cells.
+  // Below rescue_radius it changes nothing.
   double evidence_radius_max = 0.30;
   // How step 2 samples the scans for it: window_scans is
   // evidence_noise_window_scans (step 2 keeps state anyway, and one scan's
