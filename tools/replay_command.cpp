@@ -12,6 +12,19 @@
 #include "scanfilter/two_step_filter.hpp"
 
 namespace scanfilter::cli {
+namespace {
+
+// "LABEL: sigma(d) = B mm + Q mm/m^2 * d^2NOTE", in millimetres to three decimals.
+void printNoiseModel(const char* label, const RangeNoiseModel& noise, const char* note) {
+  const std::ios_base::fmtflags flags = std::cout.flags();
+  const std::streamsize precision = std::cout.precision();
+  std::cout << label << ": sigma(d) = " << std::fixed << std::setprecision(3) << 1e3 * noise.base << " mm + "
+            << 1e3 * noise.quadratic << " mm/m^2 * d^2" << note << "\n";
+  std::cout.flags(flags);
+  std::cout.precision(precision);
+}
+
+}  // namespace
 
 int runReplay(const ReplayOptions& options) {
   ScanSourceOptions source_options;
@@ -46,23 +59,12 @@ int runReplay(const ReplayOptions& options) {
   if (score.frames() > 0)
     std::cout << "filter time: " << 1e3 * filter_time.count() / static_cast<double>(score.frames())
               << " ms per scan\n";
-  if (config.params.jump_enabled) {
-    const RangeNoiseModel noise = filter.jump().noiseModel();
-    const std::ios_base::fmtflags flags = std::cout.flags();
-    const std::streamsize precision = std::cout.precision();
-    std::cout << "step 1 range noise: sigma(d) = " << std::fixed << std::setprecision(3) << 1e3 * noise.base
-              << " mm + " << 1e3 * noise.quadratic << " mm/m^2 * d^2"
-              << (config.params.jump.noise_estimate ? " (each term the larger of measured and configured)" : "")
-              << "\n";
-    if (config.params.penetration_enabled && config.params.penetration.rescue_persistent_points &&
-        config.params.penetration.evidence_noise_sigmas > 0.0) {
-      const RangeNoiseModel measured = filter.penetration().evidenceNoise();
-      std::cout << "step 2 range noise (evidence radius; measured alone): sigma(d) = " << 1e3 * measured.base
-                << " mm + " << 1e3 * measured.quadratic << " mm/m^2 * d^2\n";
-    }
-    std::cout.flags(flags);
-    std::cout.precision(precision);
-  }
+  if (config.params.jump_enabled)
+    printNoiseModel("step 1 range noise", filter.jump().noiseModel(),
+                    config.params.jump.noise_estimate ? " (each term the larger of measured and configured)" : "");
+  const PenetrationFilterParams& step2 = config.params.penetration;
+  if (config.params.penetration_enabled && step2.rescue_persistent_points && step2.evidence_noise_sigmas > 0.0)
+    printNoiseModel("step 2 range noise (evidence radius)", filter.penetration().evidenceNoise(), " (measured alone)");
   if (config.params.penetration_enabled && config.params.penetration.alignment.enabled)
     std::cout << "step 2 frames not judged (did not fit the cache): " << filter.penetration().unalignedFrames()
               << " of " << score.frames() << "\n";
