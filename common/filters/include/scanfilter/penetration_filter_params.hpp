@@ -88,9 +88,9 @@ struct PenetrationFilterParams {
   int rescue_min_count = 5;
   // Evidence counts the cached returns of the cells whose centroid lies within
   // this distance of the point: a thin leg's returns pile up within a few cm,
-  // a jump point lies off every surface by more than that. At least this:
-  // more where the measured range noise is larger (below); "within
-  // rescue_radius" below means this radius.
+  // a jump point lies off every surface by more than that. The radius grows
+  // where the measured range noise is larger (below); "within
+  // rescue_radius" in these comments means within that grown radius.
   double rescue_radius = 0.08;  // m
   // Beyond the paper 33 (evidence_radius.hpp): the radius grows to this many
   // σ(range) of the range noise step 2 measures on the scans (as step 1
