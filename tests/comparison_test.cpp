@@ -39,6 +39,32 @@ TEST(RemovalScore, FalseDeletionsByRangeBandAndClassAgnosticPrecision) {
   EXPECT_DOUBLE_EQ(merged.falseDeletionRate(2), 1.0);
 }
 
+TEST(RemovalScore, RecallByCauseCountsArtefactsOfEachCauseWhateverStepRemovedThem) {
+  Scan scan;
+  scan.ranges = {1.0, 2.0, 3.0, 4.0};
+  scan.truth = {code(PointCode::kMisdetected), code(PointCode::kMisdetected), code(PointCode::kJump),
+                code(PointCode::kValid)};
+  scan.truth_cause = {static_cast<std::uint8_t>(ArtefactCause::kMirrorGhost),
+                      static_cast<std::uint8_t>(ArtefactCause::kMirrorGhost),
+                      static_cast<std::uint8_t>(ArtefactCause::kThinObjectMix),
+                      static_cast<std::uint8_t>(ArtefactCause::kNone)};
+  // One ghost removed as a jump point, the other kept; the mix removed.
+  const std::vector<std::uint8_t> labels = {code(PointCode::kJump), code(PointCode::kValid),
+                                            code(PointCode::kMisdetected), code(PointCode::kJump)};
+  RemovalScore s;
+  s.add(scan, labels);
+  EXPECT_EQ(s.causeTruth(ArtefactCause::kMirrorGhost), 2u);
+  EXPECT_DOUBLE_EQ(s.causeRecall(ArtefactCause::kMirrorGhost), 0.5);
+  EXPECT_DOUBLE_EQ(s.causeRecall(ArtefactCause::kThinObjectMix), 1.0);
+  EXPECT_EQ(s.causeTruth(ArtefactCause::kThroughPane), 0u);
+  EXPECT_EQ(s.causeTruth(ArtefactCause::kNone), 0u) << "the valid point removed is no artefact of any cause";
+  RemovalScore merged;
+  merged.add(s);
+  merged.add(s);
+  EXPECT_EQ(merged.causeTruth(ArtefactCause::kMirrorGhost), 4u);
+  EXPECT_DOUBLE_EQ(merged.causeRecall(ArtefactCause::kMirrorGhost), 0.5);
+}
+
 TEST(SweepPoints, DefaultsFirstThenTheRestOfTheGridWithinTheBudget) {
   for (const auto& family : comparisonFamilies(FilterConfig{})) {
     std::size_t grid = 1;

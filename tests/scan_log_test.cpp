@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "scanfilter/artefact_cause.hpp"
 #include "scanfilter/input_error.hpp"
 #include "scanfilter/scan_log_reader.hpp"
 #include "scanfilter/scan_log_writer.hpp"
@@ -100,10 +101,12 @@ TEST(ScanLog, SerialisedScanRoundTrips) {
   s.ranges = {1.0, std::nan(""), 2.5};
   s.truth = {0, 3, 1};
   s.thin_leg_beams = {0};
+  s.truth_cause = {0, 0, static_cast<std::uint8_t>(ArtefactCause::kEdgeMix)};
   const auto records = writtenAndReadBack(s);
   ASSERT_EQ(records.size(), 1u);
   EXPECT_EQ(records[0].scan.truth, s.truth);
   EXPECT_EQ(records[0].scan.thin_leg_beams, s.thin_leg_beams);
+  EXPECT_EQ(records[0].scan.truth_cause, s.truth_cause);
   EXPECT_TRUE(std::isnan(records[0].scan.ranges[1]));
 }
 
@@ -153,6 +156,13 @@ TEST(ScanLogErrors, WrongTruthLength) {
 TEST(ScanLogErrors, BadPointCode) {
   EXPECT_EQ(errorOf(R"({"stamp": 1.0, "pose": [0,0,0], "angle_min": 0, "angle_increment": 0.1, "ranges": [1, 2], "labels": [0, 7]})"),
             ":2: labels[1]: expected a point code 0-3, got 7");
+}
+
+TEST(ScanLogErrors, BadArtefactCause) {
+  EXPECT_EQ(errorOf(R"({"stamp": 1.0, "pose": [0,0,0], "angle_min": 0, "angle_increment": 0.1, "ranges": [1, 2], "truth_cause": [1, 7]})"),
+            ":2: truth_cause[1]: expected an artefact cause 0-6, got 7");
+  EXPECT_EQ(errorOf(R"({"stamp": 1.0, "pose": [0,0,0], "angle_min": 0, "angle_increment": 0.1, "ranges": [1, 2], "truth_cause": [1]})"),
+            ":2: truth_cause: has 1 entries, ranges has 2; expected equal lengths");
 }
 
 TEST(ScanLogErrors, NegativeRange) {

@@ -1,5 +1,8 @@
+#include <array>
+
 #include <gtest/gtest.h>
 
+#include "scanfilter/artefact_cause.hpp"
 #include "scanfilter/input_error.hpp"
 #include "scanfilter/point_code.hpp"
 #include "scanfilter/scan_geometry.hpp"
@@ -47,6 +50,39 @@ TEST(Simulator, ProducesEveryKindOfPoint) {
   }
   for (int c = 0; c < kPointCodeCount; ++c) EXPECT_GT(counts[static_cast<std::size_t>(c)], 0u) << pointCodeName(static_cast<PointCode>(c));
   EXPECT_GT(thin, 0u);
+}
+
+// Every artefact says why it is one, and nothing else does; each scene makes
+// the causes its surfaces can: the hall's facade mirrors, the office's
+// partition transmits, both have legs and wall junctions.
+TEST(Simulator, EveryArtefactAndOnlyAnArtefactHasACause) {
+  for (const char* name : {"hall", "office"}) {
+    sim::ScanSimulator simulator(sim::findScene(name), 1);
+    std::array<std::size_t, kArtefactCauseCount> causes{};
+    ScanRecord r;
+    for (int k = 0; k < 300 && simulator.next(r); ++k) {
+      ASSERT_EQ(r.scan.truth_cause.size(), r.scan.size());
+      for (std::size_t i = 0; i < r.scan.size(); ++i) {
+        const auto cause = static_cast<ArtefactCause>(r.scan.truth_cause[i]);
+        ++causes[r.scan.truth_cause[i]];
+        const bool artefact = isRemovedCode(r.scan.truth[i]);
+        EXPECT_EQ(artefact, cause != ArtefactCause::kNone) << name << " beam " << i;
+        const bool ghost_cause = cause == ArtefactCause::kMirrorGhost || cause == ArtefactCause::kThroughPane;
+        if (artefact)
+          EXPECT_EQ(ghost_cause, r.scan.truth[i] == static_cast<std::uint8_t>(PointCode::kMisdetected))
+              << name << ": a misdetection comes from a second path, a jump point from the spot";
+      }
+    }
+    EXPECT_GT(causes[static_cast<std::size_t>(ArtefactCause::kMirrorGhost)], 0u) << name;
+    EXPECT_GT(causes[static_cast<std::size_t>(ArtefactCause::kThinObjectMix)], 0u) << name;
+    EXPECT_GT(causes[static_cast<std::size_t>(ArtefactCause::kJunctionDisplacement)], 0u) << name;
+  }
+  sim::ScanSimulator office(sim::findScene("office"), 1);
+  std::size_t through = 0;
+  ScanRecord r;
+  for (int k = 0; k < 300 && office.next(r); ++k)
+    for (auto c : r.scan.truth_cause) through += c == static_cast<std::uint8_t>(ArtefactCause::kThroughPane);
+  EXPECT_GT(through, 0u) << "the glass partition transmits";
 }
 
 // Ghosts lie behind the surface the beam hit: farther than the truth range.

@@ -9,6 +9,21 @@ void printClass(std::ostream& out, const char* name, const RemovalClassScore& s)
   out << "  " << std::left << std::setw(13) << name << std::right << std::setw(9) << s.truth << std::setw(10)
       << s.precision() << std::setw(10) << s.recall() << std::setw(10) << s.f1() << "\n";
 }
+
+// What the simulator says made each artefact, and the share of each removed.
+void printRecallByCause(std::ostream& out, const RemovalScore& score) {
+  bool any = false;
+  for (int c = 1; c < kArtefactCauseCount; ++c) any = any || score.causeTruth(static_cast<ArtefactCause>(c)) > 0;
+  if (!any) return;
+  out << "recall by cause:\n";
+  for (int c = 1; c < kArtefactCauseCount; ++c) {
+    const auto cause = static_cast<ArtefactCause>(c);
+    if (score.causeTruth(cause) == 0) continue;
+    out << "  " << std::left << std::setw(23) << artefactCauseName(cause) << std::right << std::setw(9)
+        << score.causeTruth(cause) << std::setw(10) << score.causeRecall(cause) << "\n";
+  }
+}
+
 }  // namespace
 
 void printScoreReport(std::ostream& out, const RemovalScore& score) {
@@ -29,6 +44,7 @@ void printScoreReport(std::ostream& out, const RemovalScore& score) {
       << 100.0 * score.falseDeletionRate() << " %)\n";
   out << "  thin-leg points kept:         " << score.thinLegKept() << " of " << score.thinLegTruth() << " ("
       << 100.0 * score.thinLegRetention() << " %)\n";
+  printRecallByCause(out, score);
 }
 
 }  // namespace scanfilter::cli

@@ -145,6 +145,7 @@ void fromMessage(const LabeledScanMsg& msg, Scan& scan, SensorInfo& sensor) {
   scan.labels.assign(msg.labels().begin(), msg.labels().end());
   scan.truth.clear();
   scan.thin_leg_beams.clear();
+  scan.truth_cause.clear();
 }
 
 namespace {
@@ -223,6 +224,7 @@ void fromLaserScan(const LaserScanMsg& msg, const LaserMount& mount, Scan& scan,
   scan.labels.clear();
   scan.truth.clear();
   scan.thin_leg_beams.clear();
+  scan.truth_cause.clear();
 }
 
 double yawOf(const geometry_msgs::msg::dds_::Quaternion_& q) {

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string_view>
 
+#include "scanfilter/artefact_cause.hpp"
 #include "scanfilter/input_error.hpp"
 #include "scanfilter/plausible_bounds.hpp"
 #include "scanfilter/point_code.hpp"
@@ -102,9 +103,18 @@ std::string_view topLevelNumberText(std::string_view json, std::string_view key)
   return {};
 }
 
-std::vector<std::uint8_t> parseCodes(const Json& array, const char* key, std::size_t expected,
+// The codes a per-beam array may hold: 0 to count - 1.
+struct CodeKind {
+  int count;
+  const char* one;   // for the errors: "expected <one> 0-<count - 1>"
+  const char* many;  // "expected an array of <many>"
+};
+constexpr CodeKind kPointCodes{kPointCodeCount, "a point code", "point codes"};
+constexpr CodeKind kArtefactCauses{kArtefactCauseCount, "an artefact cause", "artefact causes"};
+
+std::vector<std::uint8_t> parseCodes(const Json& array, const char* key, std::size_t expected, CodeKind kind,
                                      const FieldChecker& check) {
-  if (!array.is_array()) check.fail(key, "expected an array of point codes");
+  if (!array.is_array()) check.fail(key, std::string("expected an array of ") + kind.many);
   if (array.size() != expected)
     check.fail(key, "has " + std::to_string(array.size()) + " entries, ranges has " +
                         std::to_string(expected) + "; expected equal lengths");
@@ -112,10 +122,10 @@ std::vector<std::uint8_t> parseCodes(const Json& array, const char* key, std::si
   for (std::size_t i = 0; i < expected; ++i) {
     const Json& v = array[i];
     // As int64: a huge code read as int would wrap to a valid one.
-    if (!v.is_number_integer() || v.get<std::int64_t>() < 0 || v.get<std::int64_t>() > 255 ||
-        !isValidPointCode(static_cast<int>(v.get<std::int64_t>())))
+    if (!v.is_number_integer() || v.get<std::int64_t>() < 0 || v.get<std::int64_t>() >= kind.count)
       check.fail(std::string(key) + "[" + std::to_string(i) + "]",
-                 "expected a point code 0-3, got " + FieldChecker::describe(v));
+                 std::string("expected ") + kind.one + " 0-" + std::to_string(kind.count - 1) + ", got " +
+                     FieldChecker::describe(v));
     codes[i] = static_cast<std::uint8_t>(v.get<int>());
   }
   return codes;
@@ -238,8 +248,12 @@ void ScanLogReader::parseScan(const Json& object, std::string_view stamp_text, S
       scan.intensities[i] = (*it)[i].is_null() ? 0.0
                                                : check.finiteNumber((*it)[i], "intensities[" + std::to_string(i) + "]");
   }
-  if (const auto it = object.find("truth"); it != object.end()) scan.truth = parseCodes(*it, "truth", n, check);
-  if (const auto it = object.find("labels"); it != object.end()) scan.labels = parseCodes(*it, "labels", n, check);
+  if (const auto it = object.find("truth"); it != object.end())
+    scan.truth = parseCodes(*it, "truth", n, kPointCodes, check);
+  if (const auto it = object.find("labels"); it != object.end())
+    scan.labels = parseCodes(*it, "labels", n, kPointCodes, check);
+  if (const auto it = object.find("truth_cause"); it != object.end())
+    scan.truth_cause = parseCodes(*it, "truth_cause", n, kArtefactCauses, check);
   if (const auto it = object.find("truth_thin_leg"); it != object.end()) {
     if (!it->is_array()) check.fail("truth_thin_leg", "expected an array of beam indices");
     for (std::size_t k = 0; k < it->size(); ++k) {

@@ -46,6 +46,7 @@ Json scanToJson(const Scan& scan) {
   if (!scan.intensities.empty()) out["intensities"] = scan.intensities;
   if (!scan.truth.empty()) out["truth"] = scan.truth;
   if (!scan.thin_leg_beams.empty()) out["truth_thin_leg"] = scan.thin_leg_beams;
+  if (!scan.truth_cause.empty()) out["truth_cause"] = scan.truth_cause;
   if (!scan.labels.empty()) out["labels"] = scan.labels;
   return out;
 }

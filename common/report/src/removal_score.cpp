@@ -36,6 +36,11 @@ void RemovalScore::add(const Scan& scan, std::span<const std::uint8_t> labels) {
       by_label->labelled_artefact += isRemovedCode(scan.truth[i]);
     }
   }
+  for (std::size_t i = 0; i < scan.truth_cause.size() && i < labels.size(); ++i) {
+    if (scan.truth_cause[i] == static_cast<std::uint8_t>(ArtefactCause::kNone)) continue;
+    ++cause_truth_[scan.truth_cause[i]];
+    cause_removed_[scan.truth_cause[i]] += isRemovedCode(labels[i]);
+  }
   for (std::uint32_t beam : scan.thin_leg_beams) {
     ++thin_truth_;
     thin_kept_ += labels[beam] == static_cast<std::uint8_t>(PointCode::kValid);
@@ -52,6 +57,10 @@ void RemovalScore::add(const RemovalScore& o) {
   valid_deleted_ += o.valid_deleted_;
   thin_truth_ += o.thin_truth_;
   thin_kept_ += o.thin_kept_;
+  for (std::size_t c = 0; c < cause_truth_.size(); ++c) {
+    cause_truth_[c] += o.cause_truth_[c];
+    cause_removed_[c] += o.cause_removed_[c];
+  }
   for (std::size_t b = 0; b < kRangeBandCount; ++b) {
     valid_truth_by_band_[b] += o.valid_truth_by_band_[b];
     valid_deleted_by_band_[b] += o.valid_deleted_by_band_[b];

@@ -67,6 +67,10 @@ double ScanSimulator::sigma(double range) const {
   return scene_.lidar.noise_sigma_base + scene_.lidar.noise_sigma_quadratic * range * range;
 }
 
+double ScanSimulator::jumpThreshold(double range) const {
+  return std::max(scene_.lidar.jump_min_error, kJumpSigmas * sigma(range));
+}
+
 double ScanSimulator::directReturn(const Eigen::Vector2d& dir, const RayHit& hit) const {
   if (hit.material == Material::kRough) return 1.0;
   const double incidence = std::acos(std::min(1.0, std::abs(dir.dot(hit.normal))));
@@ -74,16 +78,19 @@ double ScanSimulator::directReturn(const Eigen::Vector2d& dir, const RayHit& hit
   return directReturnProbability(hit.material == Material::kGlass ? m.glass : m.smooth, incidence);
 }
 
-std::optional<double> ScanSimulator::specularPath(const Eigen::Vector2d& dir, const RayHit& hit) {
+std::optional<ScanSimulator::SecondPath> ScanSimulator::specularPath(const Eigen::Vector2d& dir, const RayHit& hit) {
   if (chance(directReturn(dir, hit))) return std::nullopt;
   const double incidence = std::acos(std::min(1.0, std::abs(dir.dot(hit.normal))));
   Eigen::Vector2d onward = dir - 2.0 * dir.dot(hit.normal) * hit.normal;  // mirror path
-  if (hit.material == Material::kGlass && !chance(paneReflectance(incidence, scene_.lidar.glass_refractive_index)))
+  ArtefactCause cause = ArtefactCause::kMirrorGhost;
+  if (hit.material == Material::kGlass && !chance(paneReflectance(incidence, scene_.lidar.glass_refractive_index))) {
     onward = dir;  // straight through the pane
+    cause = ArtefactCause::kThroughPane;
+  }
   const auto second = caster_.cast(hit.point + kSurfaceOffset * onward, onward, scene_.sensor.range_max);
   // The sensor reports the whole path length along the outgoing beam.
-  if (!second) return kNaN;
-  return hit.range + second->range;
+  if (!second) return SecondPath{kNaN, cause};
+  return SecondPath{hit.range + second->range, cause};
 }
 
 const std::vector<PartialReturn>& ScanSimulator::footprint(const Eigen::Vector2d& origin, double angle) {
@@ -106,19 +113,30 @@ const std::vector<PartialReturn>& ScanSimulator::footprint(const Eigen::Vector2d
     const Eigen::Vector2d d(std::cos(a), std::sin(a));
     // Light from beyond range_max is too weak to count.
     const auto hit = caster_.cast(origin + s * m.exit_aperture * across, d, scene_.sensor.range_max);
-    if (hit) parts_.push_back({hit->range, directReturn(d, *hit)});
+    if (hit) parts_.push_back({hit->range, directReturn(d, *hit), hit->is_leg});
   }
   return parts_;
 }
 
-double ScanSimulator::deformation(const Eigen::Vector2d& dir, const RayHit& hit) {
+ScanSimulator::Displacement ScanSimulator::deformation(const Eigen::Vector2d& dir, const RayHit& hit) {
   const LidarModel& m = scene_.lidar;
-  double shift = 0.0;
+  Displacement grazing, junction;
   const double incidence = std::acos(std::min(1.0, std::abs(dir.dot(hit.normal))));
-  if (incidence > m.grazing_angle_deg * kDegToRad && chance(m.grazing_probability)) shift += symmetric(m.grazing_error_max);
+  if (incidence > m.grazing_angle_deg * kDegToRad && chance(m.grazing_probability))
+    grazing = {symmetric(m.grazing_error_max), ArtefactCause::kGrazingDisplacement};
   if (caster_.distanceToCorner(hit.point) < m.junction_radius && chance(m.junction_probability))
-    shift += symmetric(m.junction_error_max);
-  return shift;
+    junction = {symmetric(m.junction_error_max), ArtefactCause::kJunctionDisplacement};
+  // Both may deform one spot: the larger displacement names the cause.
+  const bool grazing_larger = std::abs(grazing.shift) >= std::abs(junction.shift);
+  return {grazing.shift + junction.shift, grazing_larger ? grazing.cause : junction.cause};
+}
+
+ArtefactCause ScanSimulator::jumpCause(const Eigen::Vector2d& mixed_point, double range,
+                                       const Displacement& displacement) const {
+  const bool mix_alone_is_off = caster_.distanceToSurface(mixed_point) > jumpThreshold(range);
+  if (!mix_alone_is_off && displacement.cause != ArtefactCause::kNone) return displacement.cause;
+  const bool on_thin_leg = std::any_of(parts_.begin(), parts_.end(), [](const PartialReturn& p) { return p.on_thin_leg; });
+  return on_thin_leg ? ArtefactCause::kThinObjectMix : ArtefactCause::kEdgeMix;
 }
 
 ScanSimulator::Beam ScanSimulator::simulateBeam(const Eigen::Vector2d& origin, double angle) {
@@ -126,33 +144,40 @@ ScanSimulator::Beam ScanSimulator::simulateBeam(const Eigen::Vector2d& origin, d
   const SensorInfo& sensor = scene_.sensor;
   const Eigen::Vector2d dir(std::cos(angle), std::sin(angle));
   const auto hit = caster_.cast(origin, dir, sensor.range_max);
-  const Beam no_return{kNaN, static_cast<std::uint8_t>(PointCode::kNoReturn), false};
+  const Beam no_return{kNaN, static_cast<std::uint8_t>(PointCode::kNoReturn), false, ArtefactCause::kNone};
   if (!hit) return no_return;
 
   double range = hit->range;
   auto truth = static_cast<std::uint8_t>(PointCode::kValid);
-  std::optional<double> ghost;
+  ArtefactCause cause = ArtefactCause::kNone;
+  std::optional<SecondPath> ghost;
   if (hit->material != Material::kRough) ghost = specularPath(dir, *hit);
   if (ghost) {
-    if (std::isnan(*ghost)) return no_return;
-    range = *ghost;
-    if (range - hit->range > m.jump_min_error) truth = static_cast<std::uint8_t>(PointCode::kMisdetected);
+    if (std::isnan(ghost->range)) return no_return;
+    range = ghost->range;
+    if (range - hit->range > m.jump_min_error) {
+      truth = static_cast<std::uint8_t>(PointCode::kMisdetected);
+      cause = ghost->cause;
+    }
   } else {
     if (hit->material == Material::kRough && chance(m.dropout_probability)) return no_return;
     const double mixed = mixRanges(m.mixing, footprint(origin, angle));
     if (!std::isnan(mixed)) range = mixed;
-    range += deformation(dir, *hit);
+    const Eigen::Vector2d mixed_point = origin + range * dir;
+    const Displacement displacement = deformation(dir, *hit);
+    range += displacement.shift;
     // A return is a jump point when it lies on no surface at all: one that
     // slid along its own wall (grazing) or onto another one is still valid.
-    const double off_surface = caster_.distanceToSurface(origin + range * dir);
-    if (off_surface > std::max(m.jump_min_error, kJumpSigmas * sigma(range)))
+    if (caster_.distanceToSurface(origin + range * dir) > jumpThreshold(range)) {
       truth = static_cast<std::uint8_t>(PointCode::kJump);
+      cause = jumpCause(mixed_point, range - displacement.shift, displacement);
+    }
   }
   range += sigma(range) * normal_(rng_);
   range = std::round(range / m.range_resolution) * m.range_resolution;
   if (range < sensor.range_min || range > sensor.range_max) return no_return;
   const bool thin = hit->is_leg && truth == static_cast<std::uint8_t>(PointCode::kValid);
-  return {range, truth, thin};
+  return {range, truth, thin, cause};
 }
 
 bool ScanSimulator::next(ScanRecord& record) {
@@ -167,11 +192,13 @@ bool ScanSimulator::next(ScanRecord& record) {
   scan.angle_increment = 2.0 * std::numbers::pi / beams;
   scan.ranges.resize(static_cast<std::size_t>(beams));
   scan.truth.resize(static_cast<std::size_t>(beams));
+  scan.truth_cause.resize(static_cast<std::size_t>(beams));
   const Eigen::Vector2d origin = sensorOrigin(scan.pose, scene_.sensor.mount);
   for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
     const Beam beam = simulateBeam(origin, beamWorldAngle(scan, scene_.sensor, i));
     scan.ranges[i] = beam.range;
     scan.truth[i] = beam.truth;
+    scan.truth_cause[i] = static_cast<std::uint8_t>(beam.cause);
     if (beam.thin_leg) scan.thin_leg_beams.push_back(static_cast<std::uint32_t>(i));
   }
   // The log holds what odometry recorded; without drift, the true pose

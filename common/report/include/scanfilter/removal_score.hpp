@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <span>
 
+#include "scanfilter/artefact_cause.hpp"
 #include "scanfilter/point_code.hpp"
 #include "scanfilter/scan.hpp"
 
@@ -57,6 +58,13 @@ class RemovalScore {
   std::size_t thinLegTruth() const { return thin_truth_; }
   std::size_t thinLegKept() const { return thin_kept_; }
   double thinLegRetention() const { return RemovalClassScore::ratio(thin_kept_, thin_truth_); }
+  // Artefacts of one cause (simulator ground truth, `truth_cause`) and the
+  // share of them removed, whatever step removed them.
+  std::size_t causeTruth(ArtefactCause cause) const { return cause_truth_[static_cast<std::size_t>(cause)]; }
+  double causeRecall(ArtefactCause cause) const {
+    const auto c = static_cast<std::size_t>(cause);
+    return RemovalClassScore::ratio(cause_removed_[c], cause_truth_[c]);
+  }
   double falseDeletionRate(std::size_t band) const {
     return RemovalClassScore::ratio(valid_deleted_by_band_[band], valid_truth_by_band_[band]);
   }
@@ -88,6 +96,8 @@ class RemovalScore {
   std::size_t valid_deleted_ = 0;
   std::size_t thin_truth_ = 0;
   std::size_t thin_kept_ = 0;
+  std::array<std::size_t, kArtefactCauseCount> cause_truth_{};
+  std::array<std::size_t, kArtefactCauseCount> cause_removed_{};
   std::array<std::size_t, kRangeBandCount> valid_truth_by_band_{};
   std::array<std::size_t, kRangeBandCount> valid_deleted_by_band_{};
 };

@@ -40,6 +40,7 @@ struct Scan {
   std::vector<std::uint8_t> truth;           // empty when unlabelled
   std::vector<std::uint8_t> labels;          // empty until a filter ran
   std::vector<std::uint32_t> thin_leg_beams;  // simulator ground truth: beams hitting a thin leg
+  std::vector<std::uint8_t> truth_cause;     // simulator ground truth: ArtefactCause per beam; empty: unknown
 
   std::size_t size() const { return ranges.size(); }
   bool hasReturn(std::size_t i) const { return ranges[i] == ranges[i]; }  // not NaN

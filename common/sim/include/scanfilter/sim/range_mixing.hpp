@@ -13,6 +13,7 @@ namespace scanfilter::sim {
 struct PartialReturn {
   double range = 0.0;
   double weight = 0.0;
+  bool on_thin_leg = false;  // ground truth only: this part lies on a thin leg
 };
 
 // The range the receiver reports: the weighted mean of the ranges (kLinear)

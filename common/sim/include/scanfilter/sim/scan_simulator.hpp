@@ -3,6 +3,7 @@
 #include <random>
 #include <vector>
 
+#include "scanfilter/artefact_cause.hpp"
 #include "scanfilter/scan_source.hpp"
 #include "scanfilter/sim/range_mixing.hpp"
 #include "scanfilter/sim/ray_caster.hpp"
@@ -33,6 +34,17 @@ class ScanSimulator final : public ScanSource {
     double range;
     std::uint8_t truth;
     bool thin_leg;
+    ArtefactCause cause;  // kNone unless truth is an artefact
+  };
+  // A beam that left the first surface it met: where it came back from.
+  struct SecondPath {
+    double range;         // the whole path length; NaN: it never came back
+    ArtefactCause cause;  // mirrored or through a pane
+  };
+  // A deformed spot's displacement along the beam, and what deformed it.
+  struct Displacement {
+    double shift = 0.0;
+    ArtefactCause cause = ArtefactCause::kNone;
   };
   void planPoses();
   Beam simulateBeam(const Eigen::Vector2d& origin, double angle);
@@ -40,12 +52,17 @@ class ScanSimulator final : public ScanSource {
   const std::vector<PartialReturn>& footprint(const Eigen::Vector2d& origin, double angle);
   // How well a surface returns light straight back along `dir`.
   double directReturn(const Eigen::Vector2d& dir, const RayHit& hit) const;
-  // The path length of a mirrored or transmitted beam (NaN: it never comes
-  // back), or nothing when the surface returned the beam directly.
-  std::optional<double> specularPath(const Eigen::Vector2d& dir, const RayHit& hit);
+  // The path of a mirrored or transmitted beam, or nothing when the surface
+  // returned the beam directly.
+  std::optional<SecondPath> specularPath(const Eigen::Vector2d& dir, const RayHit& hit);
   // Random displacement of a deformed spot (grazing incidence, junctions).
-  double deformation(const Eigen::Vector2d& dir, const RayHit& hit);
+  Displacement deformation(const Eigen::Vector2d& dir, const RayHit& hit);
+  // Why a direct return that lies on no surface is off it: the mix, or else
+  // the displacement.
+  ArtefactCause jumpCause(const Eigen::Vector2d& mixed_point, double range, const Displacement& displacement) const;
   double sigma(double range) const;
+  // How far off every surface a direct return must lie to be a jump point.
+  double jumpThreshold(double range) const;
   bool chance(double p) { return uniform_(rng_) < p; }
   double symmetric(double max) { return (2.0 * uniform_(rng_) - 1.0) * max; }
 
