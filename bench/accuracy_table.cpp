@@ -39,7 +39,10 @@ void causeTable(const std::vector<std::pair<std::string, RemovalScore>>& scores)
     std::printf("| %s |", name.c_str());
     for (int c = 1; c < kArtefactCauseCount; ++c) {
       const auto cause = static_cast<ArtefactCause>(c);
-      std::printf(" %.3f (%zu) |", score.causeRecall(cause), score.causeTruth(cause));
+      if (score.causeTruth(cause) == 0)
+        std::printf(" - |");  // the sensor makes none
+      else
+        std::printf(" %.3f (%zu) |", score.causeRecall(cause), score.causeTruth(cause));
     }
     std::printf("\n");
   }
