@@ -163,6 +163,8 @@ TEST(ScanLogErrors, BadArtefactCause) {
             ":2: truth_cause[1]: expected an artefact cause 0-6, got 7");
   EXPECT_EQ(errorOf(R"({"stamp": 1.0, "pose": [0,0,0], "angle_min": 0, "angle_increment": 0.1, "ranges": [1, 2], "truth_cause": [1]})"),
             ":2: truth_cause: has 1 entries, ranges has 2; expected equal lengths");
+  EXPECT_EQ(errorOf(R"({"stamp": 1.0, "pose": [0,0,0], "angle_min": 0, "angle_increment": 0.1, "ranges": [1, 2], "truth_cause": 1})"),
+            ":2: truth_cause: expected an array of artefact causes");
 }
 
 TEST(ScanLogErrors, NegativeRange) {

@@ -32,6 +32,7 @@ TEST(Simulator, SameSeedSameScans) {
       differs |= !(ra.scan.ranges[i] == rc.scan.ranges[i]);
     }
     EXPECT_EQ(ra.scan.truth, rb.scan.truth);
+    EXPECT_EQ(ra.scan.truth_cause, rb.scan.truth_cause);
   }
   EXPECT_TRUE(differs) << "another seed gives other noise";
 }
@@ -52,13 +53,14 @@ TEST(Simulator, ProducesEveryKindOfPoint) {
   EXPECT_GT(thin, 0u);
 }
 
-// Every artefact says why it is one, and nothing else does; each scene makes
-// the causes its surfaces can: the hall's facade mirrors, the office's
-// partition transmits, both have legs and wall junctions.
+// Every artefact says why it is one, and nothing else does; between them
+// the hall (a mirroring facade) and the office (a transmitting partition)
+// make every cause: both have legs, edges, junctions and grazing walls.
 TEST(Simulator, EveryArtefactAndOnlyAnArtefactHasACause) {
+  std::array<std::size_t, kArtefactCauseCount> causes{};
+  std::size_t without_cause = 0, cause_without_artefact = 0, wrong_step = 0;
   for (const char* name : {"hall", "office"}) {
     sim::ScanSimulator simulator(sim::findScene(name), 1);
-    std::array<std::size_t, kArtefactCauseCount> causes{};
     ScanRecord r;
     for (int k = 0; k < 300 && simulator.next(r); ++k) {
       ASSERT_EQ(r.scan.truth_cause.size(), r.scan.size());
@@ -66,23 +68,19 @@ TEST(Simulator, EveryArtefactAndOnlyAnArtefactHasACause) {
         const auto cause = static_cast<ArtefactCause>(r.scan.truth_cause[i]);
         ++causes[r.scan.truth_cause[i]];
         const bool artefact = isRemovedCode(r.scan.truth[i]);
-        EXPECT_EQ(artefact, cause != ArtefactCause::kNone) << name << " beam " << i;
-        const bool ghost_cause = cause == ArtefactCause::kMirrorGhost || cause == ArtefactCause::kThroughPane;
-        if (artefact)
-          EXPECT_EQ(ghost_cause, r.scan.truth[i] == static_cast<std::uint8_t>(PointCode::kMisdetected))
-              << name << ": a misdetection comes from a second path, a jump point from the spot";
+        without_cause += artefact && cause == ArtefactCause::kNone;
+        cause_without_artefact += !artefact && cause != ArtefactCause::kNone;
+        // A misdetection comes from a second path, a jump point from the spot.
+        const bool second_path = cause == ArtefactCause::kMirrorGhost || cause == ArtefactCause::kThroughPane;
+        wrong_step += artefact && second_path != (r.scan.truth[i] == static_cast<std::uint8_t>(PointCode::kMisdetected));
       }
     }
-    EXPECT_GT(causes[static_cast<std::size_t>(ArtefactCause::kMirrorGhost)], 0u) << name;
-    EXPECT_GT(causes[static_cast<std::size_t>(ArtefactCause::kThinObjectMix)], 0u) << name;
-    EXPECT_GT(causes[static_cast<std::size_t>(ArtefactCause::kJunctionDisplacement)], 0u) << name;
   }
-  sim::ScanSimulator office(sim::findScene("office"), 1);
-  std::size_t through = 0;
-  ScanRecord r;
-  for (int k = 0; k < 300 && office.next(r); ++k)
-    for (auto c : r.scan.truth_cause) through += c == static_cast<std::uint8_t>(ArtefactCause::kThroughPane);
-  EXPECT_GT(through, 0u) << "the glass partition transmits";
+  EXPECT_EQ(without_cause, 0u);
+  EXPECT_EQ(cause_without_artefact, 0u);
+  EXPECT_EQ(wrong_step, 0u);
+  for (int c = 1; c < kArtefactCauseCount; ++c)
+    EXPECT_GT(causes[static_cast<std::size_t>(c)], 0u) << artefactCauseName(static_cast<ArtefactCause>(c));
 }
 
 // Ghosts lie behind the surface the beam hit: farther than the truth range.

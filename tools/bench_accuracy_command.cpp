@@ -13,6 +13,7 @@
 #include "scanfilter/accuracy/comparison_families.hpp"
 #include "scanfilter/accuracy/family_tuning.hpp"
 #include "scanfilter/accuracy/labelled_logs.hpp"
+#include "scanfilter/grouped_bar_chart.hpp"
 #include "scanfilter/input_error.hpp"
 #include "scanfilter/precision_recall_chart.hpp"
 #include "scanfilter/scan_renderer.hpp"
@@ -78,6 +79,43 @@ void comparisonTable(std::ostream& out, const std::vector<TunedFamily>& tuned, c
       out << " | " << fmt("%.1f %%", 100.0 * s.thinLegRetention()) << " | " << fmt("%.0f", r.micros_per_scan) << " |\n";
     }
   }
+}
+
+// Recall per artefact cause (simulator truth): which filter finds which kind.
+void causeTable(std::ostream& out, const std::vector<TunedFamily>& tuned, const std::vector<ScoredFilter>& scored) {
+  // Recall alone flatters a filter that deletes everything: the valid
+  // returns it deleted stand beside it.
+  out << "| filter (tuned): recall by cause |";
+  for (int c = 1; c < kArtefactCauseCount; ++c) out << " " << artefactCauseName(static_cast<ArtefactCause>(c)) << " |";
+  out << " valid deleted |\n|---|";
+  for (int c = 1; c < kArtefactCauseCount; ++c) out << "---|";
+  out << "---|\n";
+  for (std::size_t f = 0; f < tuned.size(); ++f) {
+    out << "| " << tuned[f].family->name << " |";
+    for (int c = 1; c < kArtefactCauseCount; ++c) {
+      const auto cause = static_cast<ArtefactCause>(c);
+      const RemovalScore& s = scored[f].score;
+      out << " " << (s.causeTruth(cause) ? fmt("%.3f", s.causeRecall(cause)) : std::string("-")) << " |";
+    }
+    out << " " << pct(scored[f].score.falseDeletionRate()) << " |\n";
+  }
+}
+
+void causeChart(const std::string& path, const std::vector<TunedFamily>& tuned, const std::vector<ScoredFilter>& scored) {
+  std::vector<std::string> causes;
+  for (int c = 1; c < kArtefactCauseCount; ++c) causes.emplace_back(artefactCauseName(static_cast<ArtefactCause>(c)));
+  GroupedBarChart chart("Recall by cause of artefact (tuned)", causes);
+  for (std::size_t f = 0; f < tuned.size(); ++f) {
+    std::vector<double> recall;
+    for (int c = 1; c < kArtefactCauseCount; ++c) {
+      const auto cause = static_cast<ArtefactCause>(c);
+      const RemovalScore& s = scored[f].score;
+      recall.push_back(s.causeTruth(cause) ? s.causeRecall(cause) : std::nan(""));
+    }
+    const std::string valid_deleted = pct(scored[f].score.falseDeletionRate()) + " valid deleted";
+    chart.addSeries(tuned[f].family->name + ": " + valid_deleted, std::move(recall), seriesColour(f));
+  }
+  chart.draw().save(path);
 }
 
 void prChart(const std::string& path, const std::string& title, const std::vector<TunedFamily>& tuned,
@@ -210,6 +248,8 @@ int runBenchAccuracy(const BenchAccuracyOptions& options) {
          << " other logs, ranked by artefacts F1. Precision is class-agnostic: removed points of the class against "
             "valid points removed.\n\n";
   comparisonTable(report, tuned, as_default, as_tuned);
+  report << "\n";
+  causeTable(report, tuned, as_tuned);
   report << "\n| filter | source | evaluations | artefacts F1 on the tuning logs (tuned) |\n|---|---|---|---|\n";
   for (const auto& t : tuned)
     report << "| " << t.family->name << " | " << t.family->source << " | " << t.evaluations << " | "
@@ -222,6 +262,7 @@ int runBenchAccuracy(const BenchAccuracyOptions& options) {
     prChart((dir / "compare-pr-jump.png").string(), "Jump points: precision / recall (tuned)", tuned, as_tuned, true);
     prChart((dir / "compare-pr-misdetected.png").string(), "Misdetected points: precision / recall (tuned)", tuned,
             as_tuned, false);
+    causeChart((dir / "compare-recall-by-cause.png").string(), tuned, as_tuned);
     framesFigure((dir / "compare-frames.png").string(), test_logs.front(), tuned);
     std::ofstream((dir / "accuracy-comparison.md").string()) << report.str();
   }

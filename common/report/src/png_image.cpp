@@ -98,6 +98,8 @@ void PngImage::line(int x0, int y0, int x1, int y1, Rgb colour) {
   }
 }
 
+int PngImage::glyphAdvance(int scale) { return kGlyphAdvance * scale; }
+
 void PngImage::text(int x, int y, const std::string& s, Rgb colour, int scale) {
   for (char c : s) {
     if (const Glyph* g = findGlyph(c)) {

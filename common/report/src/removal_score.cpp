@@ -37,9 +37,11 @@ void RemovalScore::add(const Scan& scan, std::span<const std::uint8_t> labels) {
     }
   }
   for (std::size_t i = 0; i < scan.truth_cause.size() && i < labels.size(); ++i) {
-    if (scan.truth_cause[i] == static_cast<std::uint8_t>(ArtefactCause::kNone)) continue;
-    ++cause_truth_[scan.truth_cause[i]];
-    cause_removed_[scan.truth_cause[i]] += isRemovedCode(labels[i]);
+    const std::uint8_t cause = scan.truth_cause[i];
+    // The reader rejects unknown causes; a scan built in code may hold one.
+    if (cause == static_cast<std::uint8_t>(ArtefactCause::kNone) || !isValidArtefactCause(cause)) continue;
+    ++cause_truth_[cause];
+    cause_removed_[cause] += isRemovedCode(labels[i]);
   }
   for (std::uint32_t beam : scan.thin_leg_beams) {
     ++thin_truth_;

@@ -131,11 +131,12 @@ ScanSimulator::Displacement ScanSimulator::deformation(const Eigen::Vector2d& di
   return {grazing.shift + junction.shift, grazing_larger ? grazing.cause : junction.cause};
 }
 
-ArtefactCause ScanSimulator::jumpCause(const Eigen::Vector2d& mixed_point, double range,
+ArtefactCause ScanSimulator::jumpCause(const Eigen::Vector2d& origin, const Eigen::Vector2d& dir, double mixed_range,
+                                       const std::vector<PartialReturn>& parts,
                                        const Displacement& displacement) const {
-  const bool mix_alone_is_off = caster_.distanceToSurface(mixed_point) > jumpThreshold(range);
+  const bool mix_alone_is_off = caster_.distanceToSurface(origin + mixed_range * dir) > jumpThreshold(mixed_range);
   if (!mix_alone_is_off && displacement.cause != ArtefactCause::kNone) return displacement.cause;
-  const bool on_thin_leg = std::any_of(parts_.begin(), parts_.end(), [](const PartialReturn& p) { return p.on_thin_leg; });
+  const bool on_thin_leg = std::any_of(parts.begin(), parts.end(), [](const PartialReturn& p) { return p.on_thin_leg; });
   return on_thin_leg ? ArtefactCause::kThinObjectMix : ArtefactCause::kEdgeMix;
 }
 
@@ -161,16 +162,17 @@ ScanSimulator::Beam ScanSimulator::simulateBeam(const Eigen::Vector2d& origin, d
     }
   } else {
     if (hit->material == Material::kRough && chance(m.dropout_probability)) return no_return;
-    const double mixed = mixRanges(m.mixing, footprint(origin, angle));
+    const std::vector<PartialReturn>& parts = footprint(origin, angle);
+    const double mixed = mixRanges(m.mixing, parts);
     if (!std::isnan(mixed)) range = mixed;
-    const Eigen::Vector2d mixed_point = origin + range * dir;
+    const double mixed_range = range;
     const Displacement displacement = deformation(dir, *hit);
     range += displacement.shift;
     // A return is a jump point when it lies on no surface at all: one that
     // slid along its own wall (grazing) or onto another one is still valid.
     if (caster_.distanceToSurface(origin + range * dir) > jumpThreshold(range)) {
       truth = static_cast<std::uint8_t>(PointCode::kJump);
-      cause = jumpCause(mixed_point, range - displacement.shift, displacement);
+      cause = jumpCause(origin, dir, mixed_range, parts, displacement);
     }
   }
   range += sigma(range) * normal_(rng_);

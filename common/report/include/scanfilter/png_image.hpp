@@ -22,6 +22,8 @@ class PngImage {
   void disc(int cx, int cy, int radius, Rgb colour);
   void line(int x0, int y0, int x1, int y1, Rgb colour);
   // Upper-case text in a 5x7 pixel font, `scale` pixels per font pixel.
+  // Each character takes glyphAdvance(scale) pixels across.
+  static int glyphAdvance(int scale);
   void text(int x, int y, const std::string& s, Rgb colour, int scale = 2);
   // A row of colour swatches, each followed by its name.
   void legend(int x, int y, const std::vector<std::pair<Rgb, std::string>>& entries, Rgb text_colour, int scale = 2);

@@ -28,8 +28,8 @@ inline constexpr const char* artefactCauseName(ArtefactCause cause) {
     case ArtefactCause::kThroughPane: return "through a pane";
     case ArtefactCause::kEdgeMix: return "mixed at an edge";
     case ArtefactCause::kThinObjectMix: return "mixed at a thin object";
-    case ArtefactCause::kGrazingDisplacement: return "displaced, grazing";
-    case ArtefactCause::kJunctionDisplacement: return "displaced, junction";
+    case ArtefactCause::kGrazingDisplacement: return "displaced at grazing incidence";
+    case ArtefactCause::kJunctionDisplacement: return "displaced at a junction";
   }
   return "unknown";
 }

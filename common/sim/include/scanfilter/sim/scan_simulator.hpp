@@ -57,9 +57,10 @@ class ScanSimulator final : public ScanSource {
   std::optional<SecondPath> specularPath(const Eigen::Vector2d& dir, const RayHit& hit);
   // Random displacement of a deformed spot (grazing incidence, junctions).
   Displacement deformation(const Eigen::Vector2d& dir, const RayHit& hit);
-  // Why a direct return that lies on no surface is off it: the mix, or else
-  // the displacement.
-  ArtefactCause jumpCause(const Eigen::Vector2d& mixed_point, double range, const Displacement& displacement) const;
+  // Why a direct return that lies on no surface is off it: the mix of the
+  // footprint's parts (at mixed_range along dir), or else the displacement.
+  ArtefactCause jumpCause(const Eigen::Vector2d& origin, const Eigen::Vector2d& dir, double mixed_range,
+                          const std::vector<PartialReturn>& parts, const Displacement& displacement) const;
   double sigma(double range) const;
   // How far off every surface a direct return must lie to be a jump point.
   double jumpThreshold(double range) const;
