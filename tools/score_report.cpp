@@ -10,18 +10,20 @@ void printClass(std::ostream& out, const char* name, const RemovalClassScore& s)
       << s.precision() << std::setw(10) << s.recall() << std::setw(10) << s.f1() << "\n";
 }
 
+constexpr int kCauseColumn = 31;  // characters: "displaced at grazing incidence" and a space
+
 // What the simulator says made each artefact, and the share of each removed.
 void printRecallByCause(std::ostream& out, const RemovalScore& score) {
   bool any = false;
   for (int c = 1; c < kArtefactCauseCount; ++c) any = any || score.causeTruth(static_cast<ArtefactCause>(c)) > 0;
   if (!any) return;
   out << "recall by cause (simulator truth):\n";
-  out << "  " << std::left << std::setw(31) << "cause" << std::right << std::setw(9) << "truth" << std::setw(10)
+  out << "  " << std::left << std::setw(kCauseColumn) << "cause" << std::right << std::setw(9) << "truth" << std::setw(10)
       << "recall" << "\n";
   for (int c = 1; c < kArtefactCauseCount; ++c) {
     const auto cause = static_cast<ArtefactCause>(c);
     if (score.causeTruth(cause) == 0) continue;
-    out << "  " << std::left << std::setw(31) << artefactCauseName(cause) << std::right << std::setw(9)
+    out << "  " << std::left << std::setw(kCauseColumn) << artefactCauseName(cause) << std::right << std::setw(9)
         << score.causeTruth(cause) << std::setw(10) << score.causeRecall(cause) << "\n";
   }
 }

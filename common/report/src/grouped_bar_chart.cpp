@@ -38,6 +38,29 @@ void GroupedBarChart::addSeries(const std::string& name, std::vector<double> val
   series_.push_back({name, std::move(values), colour});
 }
 
+namespace {
+
+// The y of share v on the plot whose 0 line is at `base`.
+int shareY(int base, double v) { return base - static_cast<int>(std::lround(std::clamp(v, 0.0, 1.0) * kPlotHeight)); }
+
+// Grid lines and their shares, drawn under the bars.
+void drawShareGrid(PngImage& image, int base, int plot_width) {
+  char tick[16];
+  for (double v = 0.0; v <= 1.0 + 1e-9; v += kTickStep) {
+    image.line(kLeft, shareY(base, v), kLeft + plot_width, shareY(base, v), kGridLine);
+    std::snprintf(tick, sizeof tick, "%.2f", v);
+    image.text(kLeft - 60, shareY(base, v) - 7, tick, kText, kTextScale);
+  }
+}
+
+// The axes, drawn over the bars' feet.
+void drawAxes(PngImage& image, int base, int plot_width) {
+  image.line(kLeft, base, kLeft + plot_width, base, kAxis);
+  image.line(kLeft, base, kLeft, kTop, kAxis);
+}
+
+}  // namespace
+
 PngImage GroupedBarChart::draw() const {
   const int bars = static_cast<int>(std::max<std::size_t>(series_.size(), 1));
   const int group_width = bars * kBarWidth + kGroupGap;
@@ -50,41 +73,39 @@ PngImage GroupedBarChart::draw() const {
   const int height = kTop + std::max(kPlotHeight + kLabelLines * kLineHeight + kLineHeight, legend_height) + kLineHeight;
   PngImage image(kLeft + plot_width + legend_width, height);
   const int base = kTop + kPlotHeight;
-  const auto py = [&](double v) { return base - static_cast<int>(std::lround(std::clamp(v, 0.0, 1.0) * kPlotHeight)); };
   image.text(kLeft, 16, title_, kText, kTextScale);
-  char tick[16];
-  for (double v = 0.0; v <= 1.0 + 1e-9; v += kTickStep) {
-    image.line(kLeft, py(v), kLeft + plot_width, py(v), kGridLine);
-    std::snprintf(tick, sizeof tick, "%.2f", v);
-    image.text(kLeft - 60, py(v) - 7, tick, kText, kTextScale);
+  drawShareGrid(image, base, plot_width);
+  for (std::size_t g = 0; g < groups_.size(); ++g)
+    drawGroup(image, g, kLeft + static_cast<int>(g) * group_width + kGroupGap / 2, base, group_width);
+  drawAxes(image, base, plot_width);
+  drawLegend(image, kLeft + plot_width + kLegendGap);
+  return image;
+}
+
+void GroupedBarChart::drawGroup(PngImage& image, std::size_t g, int x0, int base, int group_width) const {
+  for (std::size_t s = 0; s < series_.size(); ++s) {
+    const double v = series_[s].values[g];
+    if (std::isnan(v)) continue;  // nothing measured: no bar, not a zero
+    const int x = x0 + static_cast<int>(s) * kBarWidth;
+    image.fillRect(x, shareY(base, v), x + kBarWidth - 2, base, series_[s].colour);
   }
   // A label keeps half a gap clear of the next group's.
   const auto chars_per_line =
       static_cast<std::size_t>((group_width - kGroupGap / 2) / PngImage::glyphAdvance(kTextScale));
-  for (std::size_t g = 0; g < groups_.size(); ++g) {
-    const int x0 = kLeft + static_cast<int>(g) * group_width + kGroupGap / 2;
-    for (std::size_t s = 0; s < series_.size(); ++s) {
-      const double v = series_[s].values[g];
-      if (std::isnan(v)) continue;  // nothing measured: no bar, not a zero
-      const int x = x0 + static_cast<int>(s) * kBarWidth;
-      image.fillRect(x, py(v), x + kBarWidth - 2, base, series_[s].colour);
-    }
-    int y = base + 10;
-    for (const auto& line : wrapWords(groups_[g], chars_per_line)) {
-      image.text(x0, y, line, kText, kTextScale);
-      y += kLineHeight;
-    }
+  int y = base + 10;
+  for (const auto& line : wrapWords(groups_[g], chars_per_line)) {
+    image.text(x0, y, line, kText, kTextScale);
+    y += kLineHeight;
   }
-  image.line(kLeft, base, kLeft + plot_width, base, kAxis);
-  image.line(kLeft, base, kLeft, kTop, kAxis);
-  int legend_y = kTop;
+}
+
+void GroupedBarChart::drawLegend(PngImage& image, int x) const {
+  int y = kTop;
   for (const auto& s : series_) {
-    const int x = kLeft + plot_width + kLegendGap;
-    image.fillRect(x, legend_y, x + 12, legend_y + 12, s.colour);
-    image.text(x + kSwatchToText, legend_y, s.name, kText, kTextScale);
-    legend_y += kLineHeight;
+    image.fillRect(x, y, x + 12, y + 12, s.colour);
+    image.text(x + kSwatchToText, y, s.name, kText, kTextScale);
+    y += kLineHeight;
   }
-  return image;
 }
 
 }  // namespace scanfilter

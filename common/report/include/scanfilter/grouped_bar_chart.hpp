@@ -2,7 +2,9 @@
 // A grouped bar chart of shares (0-1) as PNG: one group per category, one
 // coloured bar per series in each; for the recall per artefact cause of
 // every filter in docs/accuracy.md.
+#include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "scanfilter/png_image.hpp"
@@ -18,6 +20,11 @@ class GroupedBarChart {
   PngImage draw() const;
 
  private:
+  // Group g's bars from x0, their 0 line at `base`, and its label below.
+  void drawGroup(PngImage& image, std::size_t g, int x0, int base, int group_width) const;
+  // One swatch and name per series, a line each, from x.
+  void drawLegend(PngImage& image, int x) const;
+
   struct Series {
     std::string name;
     std::vector<double> values;
