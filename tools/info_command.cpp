@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "commands.hpp"
+#include "scanfilter/artefact_cause.hpp"
 #include "scanfilter/point_code.hpp"
 #include "scanfilter/scan_source.hpp"
 
@@ -19,6 +20,7 @@ int runInfo(const InfoOptions& options) {
   double path = 0.0;
   std::size_t min_beams = SIZE_MAX, max_beams = 0;
   std::array<std::size_t, kPointCodeCount> label_counts{}, truth_counts{};
+  std::array<std::size_t, kArtefactCauseCount> cause_counts{};
   Pose2 previous;
   ScanRecord record;
   while (source->next(record)) {
@@ -35,6 +37,7 @@ int runInfo(const InfoOptions& options) {
     labelled += !s.labels.empty();
     for (auto code : s.labels) ++label_counts[code];
     for (auto code : s.truth) ++truth_counts[code];
+    for (auto cause : s.truth_cause) ++cause_counts[cause];
     with_truth += !s.truth.empty();
   }
   std::cout << "file:      " << options.input << "\n"
@@ -57,6 +60,15 @@ int runInfo(const InfoOptions& options) {
   };
   if (with_truth > 0) counts("truth by code:", truth_counts);
   if (labelled > 0) counts("labels:   ", label_counts);
+  std::size_t artefacts_with_cause = 0;
+  for (int c = 1; c < kArtefactCauseCount; ++c) artefacts_with_cause += cause_counts[static_cast<std::size_t>(c)];
+  if (artefacts_with_cause > 0) {
+    std::cout << "truth by cause:";
+    for (int c = 1; c < kArtefactCauseCount; ++c)
+      std::cout << " " << artefactCauseName(static_cast<ArtefactCause>(c)) << "="
+                << cause_counts[static_cast<std::size_t>(c)] << (c + 1 < kArtefactCauseCount ? "," : "");
+    std::cout << "\n";
+  }
   return 0;
 }
 

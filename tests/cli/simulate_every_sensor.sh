@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `scanfilter simulate` puts every sensor preset on a scene, at its own or a
 # given angular step, logs drifting odometry unless told to log the true
-# poses, and refuses an unknown sensor; replay reads what it writes.
+# poses, and refuses an unknown sensor; replay reads what it writes, and
+# info and replay report the artefacts' causes.
 #
 #   simulate_every_sensor.sh SCANFILTER
 set -euo pipefail
@@ -30,6 +31,14 @@ check triangulation 360
 [[ $(head -1 "$WORK/own.scanlog.jsonl") == *"odometry drift 1 %, 0.5°/m"* ]] || fail "drift is not on by default"
 "$SF" simulate --scene office --max-frames 2 --true-poses -o "$WORK/true.scanlog.jsonl" > /dev/null
 [[ $(head -1 "$WORK/true.scanlog.jsonl") == *"true poses"* ]] || fail "--true-poses does not log the true poses"
+
+# Every artefact carries its cause: info counts them, replay scores each.
+"$SF" simulate --scene office --seed 2 --max-frames 30 -o "$WORK/causes.scanlog.jsonl" > /dev/null
+info=$("$SF" info "$WORK/causes.scanlog.jsonl")
+[[ "$info" =~ through\ a\ pane=([0-9]+) ]] || fail "info does not count the causes: $info"
+[ "${BASH_REMATCH[1]}" -gt 0 ] || fail "the office's partition transmitted nothing in 30 scans: $info"
+replayed=$("$SF" replay "$WORK/causes.scanlog.jsonl")
+[[ "$replayed" == *"recall by cause"*"through a pane"* ]] || fail "replay does not score the causes: $replayed"
 
 set +e
 out=$("$SF" simulate --scene hall --sensor sonar -o "$WORK/x.scanlog.jsonl" 2>&1)
