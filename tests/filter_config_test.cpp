@@ -84,6 +84,10 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(sm.max_segments, dm.max_segments);
   EXPECT_EQ(sm.head_on_deg, dm.head_on_deg);
   EXPECT_EQ(sm.head_on_through_beams, dm.head_on_through_beams);
+  EXPECT_EQ(sm.specular_lifetime, dm.specular_lifetime);
+  EXPECT_EQ(sm.specular_confirm_distance, dm.specular_confirm_distance);
+  EXPECT_EQ(sm.drift_margin_per_m, dm.drift_margin_per_m);
+  EXPECT_EQ(sm.drift_margin_deg_per_m, dm.drift_margin_deg_per_m);
   EXPECT_EQ(sm.segments.max_spacing, dm.segments.max_spacing);
   EXPECT_EQ(sm.segments.max_deviation, dm.segments.max_deviation);
   EXPECT_EQ(sm.segments.min_returns, dm.segments.min_returns);
@@ -121,6 +125,18 @@ TEST(FilterConfig, PaperLiteralPresetLoads) {
   EXPECT_FALSE(paper.params.jump.noise_estimate) << "the paper has no noise model";
   EXPECT_FALSE(paper.params.jump.keep_foreground_clusters) << "eq. 7 as printed deletes every lone return";
   EXPECT_FALSE(paper.params.jump.keep_unresolved_returns);
+}
+
+TEST(FilterConfig, ReadsThePaneAndMirrorMemoryKeys) {
+  const FilterConfig c = parseFilterConfig(
+      "penetration_filter:\n  surface_memory:\n    specular_lifetime: 120\n    specular_confirm_distance: 0.2\n"
+      "    drift_margin_per_m: 0.01\n    drift_margin_deg_per_m: 0.5\n",
+      "f.yaml");
+  const SurfaceMemoryParams& m = c.params.penetration.surface_memory;
+  EXPECT_EQ(m.specular_lifetime, 120.0);
+  EXPECT_EQ(m.specular_confirm_distance, 0.2);
+  EXPECT_EQ(m.drift_margin_per_m, 0.01);
+  EXPECT_EQ(m.drift_margin_deg_per_m, 0.5);
 }
 
 TEST(FilterConfig, AutoValuesComeFromTheSensor) {
@@ -214,6 +230,12 @@ TEST(FilterConfigErrors, NameFileLineAndKey) {
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    head_on_deg: 0\n"),
             "f.yaml:3: penetration_filter.surface_memory.head_on_deg: expected 0 < value <= 45 (degrees off the "
             "normal; head_on_through_beams: 0 turns the rule off)");
+  EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    specular_lifetime: -1\n"),
+            "f.yaml:3: penetration_filter.surface_memory.specular_lifetime: expected a value >= 0 (s; at most "
+            "lifetime: panes and mirrors live as long as any surface)");
+  EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    drift_margin_deg_per_m: 50\n"),
+            "f.yaml:3: penetration_filter.surface_memory.drift_margin_deg_per_m: expected 0 <= value <= 45 (degrees "
+            "per m driven; 0: off)");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    head_on_through_beams: -1\n"),
             "f.yaml:3: penetration_filter.surface_memory.head_on_through_beams: expected an integer >= 0 (0: never "
             "forget so)");

@@ -454,5 +454,89 @@ TEST(SurfaceMemory, ASurfaceSeenAgainEndsWhereTheNewFrameSawPastIt) {
   EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {-0.5, 3.0}, at(1.0)));
 }
 
+// Beyond the paper 34: a sparse line (a pane's scattered returns) 1 m in
+// front of the sensor, from x = -1 to 1, remembered at t = 0.
+SurfaceMemory memoryOfASparseLine(const SurfaceMemoryParams& params) {
+  SurfaceMemory memory(params);
+  const std::vector<StraightSegment> found = {{{-1.0, 1.0}, {1.0, 1.0}, false, false}};
+  memory.rememberSegments(found, kOrigin, at(0.0), 0.0);
+  return memory;
+}
+
+SurfaceMemoryParams panesRememberedLonger() {
+  SurfaceMemoryParams params;
+  params.lifetime = 5.0;
+  params.specular_lifetime = 60.0;
+  return params;
+}
+
+// What a frame at the origin sees of the line: returns on it at these x.
+std::vector<Eigen::Vector2d> returnsOnTheLineAt(std::initializer_list<double> xs) {
+  std::vector<Eigen::Vector2d> points;
+  for (double x : xs) points.emplace_back(x, 1.0);
+  return points;
+}
+
+TEST(SurfaceMemory, ASparseLineSeenOnlyHeadOnIsAPaneAndOutlivesTheLifetime) {
+  SurfaceMemory memory = memoryOfASparseLine(panesRememberedLonger());
+  // The lobe at 1 m: tan(5°) + specular_confirm_distance = 0.19 m either side of the foot.
+  const auto head_on = returnsOnTheLineAt({-0.05, 0.1});
+  memory.confirmPanesAndMirrors(head_on, usableReturns(head_on), kOrigin);
+  memory.forget(kOrigin, at(30.0));
+  EXPECT_EQ(memory.size(), 1u);
+  EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {0.0, 2.0}, at(30.0)));
+  memory.forget(kOrigin, at(61.0));
+  EXPECT_EQ(memory.size(), 0u) << "a pane expires after specular_lifetime";
+}
+
+TEST(SurfaceMemory, ASparseLineWithReturnsOffItsLobeIsNoPane) {
+  // A row of chair legs returns at any angle: one return off the lobe.
+  SurfaceMemory memory = memoryOfASparseLine(panesRememberedLonger());
+  const auto legs = returnsOnTheLineAt({0.0, 0.6});
+  memory.confirmPanesAndMirrors(legs, usableReturns(legs), kOrigin);
+  memory.forget(kOrigin, at(6.0));
+  EXPECT_EQ(memory.size(), 0u);
+  // Nor does a frame that does not face it confirm it, nor one with no return on it.
+  SurfaceMemory unfaced = memoryOfASparseLine(panesRememberedLonger());
+  const auto from_aside = returnsOnTheLineAt({0.9});
+  unfaced.confirmPanesAndMirrors(from_aside, usableReturns(from_aside), {3.0, 0.0});
+  const std::vector<Eigen::Vector2d> nothing_on_it = {{0.0, 3.0}};
+  unfaced.confirmPanesAndMirrors(nothing_on_it, usableReturns(nothing_on_it), kOrigin);
+  unfaced.forget(kOrigin, at(6.0));
+  EXPECT_EQ(unfaced.size(), 0u);
+}
+
+TEST(SurfaceMemory, OnlySparseLinesAreConfirmedAndOnlyWithTheLongerLifeOn) {
+  // A wall a frame saw as a straight run is no sparse line: never a pane.
+  SurfaceMemory wall = memoryOfAWall(panesRememberedLonger());
+  const auto head_on = returnsOnTheLineAt({0.0});
+  wall.confirmPanesAndMirrors(head_on, usableReturns(head_on), kOrigin);
+  wall.forget(kOrigin, at(6.0));
+  EXPECT_EQ(wall.size(), 0u);
+  SurfaceMemoryParams off = panesRememberedLonger();
+  off.specular_lifetime = 0.0;
+  SurfaceMemory memory = memoryOfASparseLine(off);
+  memory.confirmPanesAndMirrors(head_on, usableReturns(head_on), kOrigin);
+  memory.forget(kOrigin, at(6.0));
+  EXPECT_EQ(memory.size(), 0u);
+}
+
+TEST(SurfaceMemory, TheMarginGrowsWithThePathDrivenSinceASurfaceWasSeen) {
+  SurfaceMemoryParams params;
+  params.lifetime = 1e3;
+  params.drift_margin_per_m = 0.01;
+  params.drift_margin_deg_per_m = 0.5;
+  SurfaceMemory memory = memoryOfAWall(params);  // y = 1, seen from the origin
+  memory.forget(kOrigin, at(0.0));
+  const Eigen::Vector2d ghost{0.0, 1.6};  // 0.6 m behind: beyond surface_margin 0.2 + 0.02 per m
+  EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, ghost, at(1.0)));
+  // Drive 20 m along y = -1 and back (never crossing it): the margin grows by
+  // (0.01 + tan 0.5° · 1.6 m) · 20 m = 0.48 m.
+  memory.forget({10.0, -1.0}, at(10.0));
+  memory.forget(kOrigin, at(20.0));
+  EXPECT_FALSE(memory.liesBeyondASurface(kOrigin, ghost, at(20.0)));
+  EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {0.0, 2.5}, at(20.0))) << "a ghost farther behind still is";
+}
+
 }  // namespace
 }  // namespace scanfilter

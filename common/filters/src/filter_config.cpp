@@ -101,6 +101,10 @@ void readSurfaceMemory(const YamlSection& parent, SurfaceMemoryParams& m, double
   s.read("max_segments", m.max_segments);
   s.read("head_on_deg", m.head_on_deg);
   s.read("head_on_through_beams", m.head_on_through_beams);
+  s.read("specular_lifetime", m.specular_lifetime);
+  s.read("specular_confirm_distance", m.specular_confirm_distance);
+  s.read("drift_margin_per_m", m.drift_margin_per_m);
+  s.read("drift_margin_deg_per_m", m.drift_margin_deg_per_m);
   s.read("max_spacing", m.segments.max_spacing);
   s.read("max_deviation", m.segments.max_deviation);
   s.read("min_returns", m.segments.min_returns);
@@ -122,6 +126,12 @@ void readSurfaceMemory(const YamlSection& parent, SurfaceMemoryParams& m, double
   s.requireRange("head_on_deg", m.head_on_deg, 1e-3, 45.0,
                  "0 < value <= 45 (degrees off the normal; head_on_through_beams: 0 turns the rule off)");
   s.requireRange("head_on_through_beams", m.head_on_through_beams, 0, 1e6, "an integer >= 0 (0: never forget so)");
+  s.requireRange("specular_lifetime", m.specular_lifetime, 0.0, 1e6,
+                 "a value >= 0 (s; at most lifetime: panes and mirrors live as long as any surface)");
+  s.requireRange("specular_confirm_distance", m.specular_confirm_distance, 1e-3, 1.0, "0.001 <= value <= 1 (m)");
+  s.requireRange("drift_margin_per_m", m.drift_margin_per_m, 0.0, 1.0, "0 <= value <= 1 (m per m driven; 0: off)");
+  s.requireRange("drift_margin_deg_per_m", m.drift_margin_deg_per_m, 0.0, 45.0,
+                 "0 <= value <= 45 (degrees per m driven; 0: off)");
   s.requireRange("max_spacing", m.segments.max_spacing, 1e-3, 10.0, "0.001 <= value <= 10 (m)");
   s.requireRange("max_deviation", m.segments.max_deviation, 0.0, 1.0, "0 <= value <= 1 (m)");
   s.requireRange("min_returns", m.segments.min_returns, 2, 1e6, "an integer >= 2 (two returns make a line)");

@@ -188,6 +188,7 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
           memory_.remember(points_, keptReturns(labels), judgement.origin, scan.stamp, isFullTurn(scan), cache_holds);
       if (remembered && params_.surface_memory.sparse_surfaces.enabled)
         rememberSparseSurfaces(judgement.origin, scan.stamp);
+      memory_.confirmPanesAndMirrors(points_, allReturns(scan), judgement.origin);
     }
   } else {
     placeFrame(scan, sensor);

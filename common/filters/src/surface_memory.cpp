@@ -16,12 +16,17 @@ std::optional<double> SurfaceMemory::Segment::crossingAlong(const Eigen::Vector2
 
 void SurfaceMemory::clear() {
   segments_.clear();
+  path_ = 0.0;
   last_remembered_.reset();
   last_origin_.reset();
 }
 
+double SurfaceMemory::lifetimeOf(const Segment& s) const {
+  return s.pane_or_mirror ? std::max(params_.lifetime, params_.specular_lifetime) : params_.lifetime;
+}
+
 void SurfaceMemory::forget(const Eigen::Vector2d& origin, Stamp now) {
-  drop([&](const Segment& s) { return now.secondsSince(s.last_seen) > params_.lifetime; });
+  drop([&](const Segment& s) { return now.secondsSince(s.last_seen) > lifetimeOf(s); });
   if (last_origin_) {
     const Eigen::Vector2d from = *last_origin_;
     drop([&](const Segment& s) {
@@ -29,6 +34,7 @@ void SurfaceMemory::forget(const Eigen::Vector2d& origin, Stamp now) {
       return along && *along >= 0.0 && *along <= s.length;
     });
   }
+  if (last_origin_) path_ += (origin - *last_origin_).norm();
   last_origin_ = origin;
 }
 
@@ -73,12 +79,23 @@ double SurfaceMemory::surfaceMargin(const Eigen::Vector2d& origin, const Eigen::
   return params_.surface_margin + params_.surface_margin_per_m * (p - origin).norm();
 }
 
+double SurfaceMemory::driftMargin(const Segment& s, double range) const {
+  // Odometry drifts with the path driven: the position by a share of it,
+  // the heading by an angle per metre, which moves a return at `range` by
+  // range times that angle. The frames' alignment to the cache corrects the
+  // drift only relative to frames of the last seconds.
+  const double heading = std::tan(degreesToRadians(params_.drift_margin_deg_per_m));
+  return (params_.drift_margin_per_m + heading * range) * (path_ - s.path_when_seen);
+}
+
 bool SurfaceMemory::liesBeyondASurface(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now) const {
   const double margin = surfaceMargin(origin, p);
+  const double range = (p - origin).norm();
   const Eigen::Vector2d lo = origin.cwiseMin(p), hi = origin.cwiseMax(p);
   return std::any_of(segments_.begin(), segments_.end(), [&](const Segment& s) {
     const bool boxes_meet = (s.hi.array() >= lo.array()).all() && (s.lo.array() <= hi.array()).all();
-    return boxes_meet && now.secondsSince(s.last_seen) <= params_.lifetime && beamPassesThrough(s, origin, p, margin);
+    return boxes_meet && now.secondsSince(s.last_seen) <= lifetimeOf(s) &&
+           beamPassesThrough(s, origin, p, margin + driftMargin(s, range));
   });
 }
 
@@ -108,6 +125,30 @@ bool SurfaceMemory::seenThroughHeadOn(const Segment& s, std::span<const Eigen::V
   return through >= params_.head_on_through_beams;
 }
 
+bool SurfaceMemory::confirmedHeadOn(const Segment& s, std::span<const Eigen::Vector2d> points,
+                                    const BeamMask& returns, const Eigen::Vector2d& origin) const {
+  const double foot = s.unit.dot(origin - s.a);
+  if (foot < 0.0 || foot > s.length) return false;  // the frame does not face it
+  const double near = params_.specular_confirm_distance;
+  const double lobe = std::abs(s.normal.dot(origin - s.a)) * std::tan(degreesToRadians(params_.head_on_deg)) + near;
+  int in_lobe = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!returns[i] || std::abs(s.normal.dot(points[i] - s.a)) > near) continue;
+    const double along = s.unit.dot(points[i] - s.a);
+    if (along < 0.0 || along > s.length) continue;
+    if (std::abs(along - foot) > lobe) return false;  // returned off the lobe: no pane or mirror
+    ++in_lobe;
+  }
+  return in_lobe > 0;
+}
+
+void SurfaceMemory::confirmPanesAndMirrors(std::span<const Eigen::Vector2d> points, const BeamMask& returns,
+                                           const Eigen::Vector2d& origin) {
+  if (params_.specular_lifetime <= params_.lifetime) return;
+  for (Segment& s : segments_)
+    if (s.sparse && !s.pane_or_mirror) s.pane_or_mirror = confirmedHeadOn(s, points, returns, origin);
+}
+
 void SurfaceMemory::forgetSeenThroughHeadOn(std::span<const Eigen::Vector2d> points, const BeamMask& returns,
                                             const Eigen::Vector2d& origin) {
   if (params_.head_on_through_beams <= 0) return;
@@ -132,6 +173,7 @@ std::vector<SurfaceMemory::Fresh> SurfaceMemory::facingSegments(std::span<const 
     // The sine of the angle at which the beam to its middle meets it.
     if (std::abs(cross(to_middle, segment.unit)) < min_sin) continue;
     fresh.push_back({segment, s.a_seen_past, s.b_seen_past});
+    fresh.back().segment.path_when_seen = path_;
   }
   return fresh;
 }
@@ -188,6 +230,21 @@ std::vector<SurfaceMemory::Segment> SurfaceMemory::merged(const Fresh& fresh, co
                                           hi > seen_hi ? 0.0 : end)};
   if (lo < seen_lo) out.push_back(segmentBetween(at(lo), at(seen_lo), remembered, lo_margin, 0.0));
   if (hi > seen_hi) out.push_back(segmentBetween(at(seen_hi), at(hi), remembered, 0.0, hi_margin));
+  // One surface: what any piece was known to be, all are; the stretches
+  // beyond the new one were last seen when the newest old piece was.
+  bool sparse = now.sparse, pane_or_mirror = now.pane_or_mirror;
+  double old_path = olds.front().path_when_seen;
+  for (const Segment& old : olds) {
+    sparse = sparse || old.sparse;
+    pane_or_mirror = pane_or_mirror || old.pane_or_mirror;
+    old_path = std::max(old_path, old.path_when_seen);
+  }
+  for (Segment& piece : out) {
+    piece.sparse = sparse;
+    piece.pane_or_mirror = pane_or_mirror;
+    piece.path_when_seen = old_path;
+  }
+  out.front().path_when_seen = now.path_when_seen;
   return out;
 }
 
@@ -207,7 +264,9 @@ bool SurfaceMemory::remember(std::span<const Eigen::Vector2d> points, const Beam
 
 void SurfaceMemory::rememberSegments(std::span<const StraightSegment> found, const Eigen::Vector2d& origin,
                                      Stamp stamp, double min_beam_surface_angle_deg) {
-  mergeIn(facingSegments(found, origin, stamp, min_beam_surface_angle_deg));
+  std::vector<Fresh> fresh = facingSegments(found, origin, stamp, min_beam_surface_angle_deg);
+  for (Fresh& f : fresh) f.segment.sparse = true;
+  mergeIn(fresh);
 }
 
 void SurfaceMemory::mergeIn(const std::vector<Fresh>& fresh_segments) {

@@ -28,6 +28,11 @@ struct SurfaceMemoryParams {
   std::size_t max_segments = 2000;          // the oldest go first beyond this (stamps that do not advance)
   double head_on_deg = 5.0;                 // degrees off a segment's normal where a mirror or pane returns the beam
   int head_on_through_beams = 2;            // beams seen through it there, none on it: it is gone; 0: never
+  // Panes and mirrors remembered longer (Beyond the paper 34; off by default).
+  double specular_lifetime = 0.0;           // s a confirmed pane or mirror is remembered; <= lifetime: lifetime
+  double specular_confirm_distance = 0.10;  // m, a return this near a segment's line lies on it when confirming
+  double drift_margin_per_m = 0.0;          // m of surface margin per m driven since a segment was seen
+  double drift_margin_deg_per_m = 0.0;      // ... and this heading drift per m driven, times the return's range
   StraightSegmentParams segments;
   // Surfaces the cache holds a return at a time, found by the penetration
   // filter (sparse_surfaces.hpp) and remembered here too.
@@ -70,6 +75,14 @@ class SurfaceMemory {
   // remembered surface (one seen within the lifetime: judging without
   // forgetting first still ignores older ones).
   bool liesBeyondASurface(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now) const;
+  // Confirms the sparse segments (rememberSegments) this frame faces as
+  // panes or mirrors: it sees returns on them only within head_on_deg of the
+  // foot of its perpendicular (their specular lobe), none elsewhere on them,
+  // where a row of chair legs returns at any angle. A confirmed one is
+  // remembered specular_lifetime (docs/accuracy.md, Beyond the paper 34).
+  // `returns`: every beam with a return. A no-op with the rule off.
+  void confirmPanesAndMirrors(std::span<const Eigen::Vector2d> points, const BeamMask& returns,
+                              const Eigen::Vector2d& origin);
   // Forgets the segments a frame saw through head-on. A mirror or a pane
   // returns the beam within head_on_deg of its normal (its specular lobe),
   // so a frame whose beams there pass through it, none ending on it, shows
@@ -105,6 +118,9 @@ class SurfaceMemory {
     // another time (end_margin again once that stretch is dropped).
     double margin_a = 0.0;
     double margin_b = 0.0;
+    bool sparse = false;               // found as a line of single cached returns (rememberSegments)
+    bool pane_or_mirror = false;       // a sparse one a frame confirmed (confirmPanesAndMirrors)
+    double path_when_seen = 0.0;       // m the sensor had driven when it was last seen
 
     Eigen::Vector2d b() const { return a + unit * length; }
     // Whether a point `along` the segment from a lies inside its end margins.
@@ -131,6 +147,11 @@ class SurfaceMemory {
   bool beamPassesThrough(const Segment& s, const Eigen::Vector2d& origin, const Eigen::Vector2d& p,
                          double surface_margin) const;
   double surfaceMargin(const Eigen::Vector2d& origin, const Eigen::Vector2d& p) const;
+  // The margin's growth for s: the drift of the path driven since it was seen.
+  double driftMargin(const Segment& s, double range) const;
+  double lifetimeOf(const Segment& s) const;
+  bool confirmedHeadOn(const Segment& s, std::span<const Eigen::Vector2d> points, const BeamMask& returns,
+                       const Eigen::Vector2d& origin) const;
   bool seenThroughHeadOn(const Segment& s, std::span<const Eigen::Vector2d> points, const BeamMask& returns,
                          const Eigen::Vector2d& origin) const;
   void keepWithinBound();
@@ -143,6 +164,7 @@ class SurfaceMemory {
   std::vector<Segment> segments_;
   std::optional<Stamp> last_remembered_;
   std::optional<Eigen::Vector2d> last_origin_;
+  double path_ = 0.0;  // m the sensor has driven since clear(), as forget() saw it
 };
 
 }  // namespace scanfilter
