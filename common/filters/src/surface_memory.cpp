@@ -84,6 +84,7 @@ double SurfaceMemory::driftMargin(const Segment& s, double range) const {
   // the heading by an angle per metre, which moves a return at `range` by
   // range times that angle. The frames' alignment to the cache corrects the
   // drift only relative to frames of the last seconds.
+  if (params_.drift_margin_per_m == 0.0 && params_.drift_margin_deg_per_m == 0.0) return 0.0;  // off: no work
   const double heading = std::tan(degreesToRadians(params_.drift_margin_deg_per_m));
   return (params_.drift_margin_per_m + heading * range) * (path_ - s.path_when_seen);
 }
