@@ -454,11 +454,11 @@ TEST(SurfaceMemory, ASurfaceSeenAgainEndsWhereTheNewFrameSawPastIt) {
   EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {-0.5, 3.0}, at(1.0)));
 }
 
-// Beyond the paper 34: a sparse line (a pane's scattered returns) 1 m in
-// front of the sensor, from x = -1 to 1, remembered at t = 0.
-SurfaceMemory memoryOfASparseLine(const SurfaceMemoryParams& params) {
+// Beyond the paper 34: a sparse line (a pane's scattered returns) at y =
+// `distance` in front of the sensor, from x = -1 to 1, remembered at t = 0.
+SurfaceMemory memoryOfASparseLine(const SurfaceMemoryParams& params, double distance = 1.0) {
   SurfaceMemory memory(params);
-  const std::vector<StraightSegment> found = {{{-1.0, 1.0}, {1.0, 1.0}, false, false}};
+  const std::vector<StraightSegment> found = {{{-1.0, distance}, {1.0, distance}, false, false}};
   memory.rememberSegments(found, kOrigin, at(0.0), 0.0);
   return memory;
 }
@@ -470,17 +470,19 @@ SurfaceMemoryParams panesRememberedLonger() {
   return params;
 }
 
-// What a frame at the origin sees of the line: returns on it at these x.
-std::vector<Eigen::Vector2d> returnsOnTheLineAt(std::initializer_list<double> xs) {
+// What a frame at the origin sees of a pane at y = `distance`: returns on it
+// at these x, and beams through it beyond its specular lobe (to y = 3 d).
+std::vector<Eigen::Vector2d> aFrameFacing(std::initializer_list<double> xs, double distance = 1.0) {
   std::vector<Eigen::Vector2d> points;
-  for (double x : xs) points.emplace_back(x, 1.0);
+  for (double x : xs) points.emplace_back(x, distance);
+  for (double x : {-0.8, -0.6, 0.6, 0.8}) points.emplace_back(3.0 * x, 3.0 * distance);
   return points;
 }
 
 TEST(SurfaceMemory, ASparseLineSeenOnlyHeadOnIsAPaneAndOutlivesTheLifetime) {
   SurfaceMemory memory = memoryOfASparseLine(panesRememberedLonger());
   // The lobe at 1 m: tan(5°) + specular_confirm_distance = 0.19 m either side of the foot.
-  const auto head_on = returnsOnTheLineAt({-0.05, 0.1});
+  const auto head_on = aFrameFacing({-0.05, 0.1});
   memory.confirmPanesAndMirrors(head_on, usableReturns(head_on), kOrigin);
   memory.forget(kOrigin, at(30.0));
   EXPECT_EQ(memory.size(), 1u);
@@ -489,36 +491,70 @@ TEST(SurfaceMemory, ASparseLineSeenOnlyHeadOnIsAPaneAndOutlivesTheLifetime) {
   EXPECT_EQ(memory.size(), 0u) << "a pane expires after specular_lifetime";
 }
 
+TEST(SurfaceMemory, TheLobeWidensWithDistance) {
+  // At 3 m the lobe reaches 3 tan(5°) + 0.1 = 0.36 m: a return at x = 0.3 lies in it.
+  SurfaceMemory memory = memoryOfASparseLine(panesRememberedLonger(), 3.0);
+  const auto head_on = aFrameFacing({0.3}, 3.0);
+  memory.confirmPanesAndMirrors(head_on, usableReturns(head_on), kOrigin);
+  memory.forget(kOrigin, at(30.0));
+  EXPECT_EQ(memory.size(), 1u);
+}
+
 TEST(SurfaceMemory, ASparseLineWithReturnsOffItsLobeIsNoPane) {
   // A row of chair legs returns at any angle: one return off the lobe.
   SurfaceMemory memory = memoryOfASparseLine(panesRememberedLonger());
-  const auto legs = returnsOnTheLineAt({0.0, 0.6});
+  const auto legs = aFrameFacing({0.0, 0.6});
   memory.confirmPanesAndMirrors(legs, usableReturns(legs), kOrigin);
   memory.forget(kOrigin, at(6.0));
   EXPECT_EQ(memory.size(), 0u);
-  // Nor does a frame that does not face it confirm it, nor one with no return on it.
-  SurfaceMemory unfaced = memoryOfASparseLine(panesRememberedLonger());
-  const auto from_aside = returnsOnTheLineAt({0.9});
-  unfaced.confirmPanesAndMirrors(from_aside, usableReturns(from_aside), {3.0, 0.0});
-  const std::vector<Eigen::Vector2d> nothing_on_it = {{0.0, 3.0}};
-  unfaced.confirmPanesAndMirrors(nothing_on_it, usableReturns(nothing_on_it), kOrigin);
-  unfaced.forget(kOrigin, at(6.0));
-  EXPECT_EQ(unfaced.size(), 0u);
 }
 
-TEST(SurfaceMemory, OnlySparseLinesAreConfirmedAndOnlyWithTheLongerLifeOn) {
+TEST(SurfaceMemory, AFrameConfirmsOnlyALineItFacesSeesOnAndSeesThrough) {
+  const auto confirmedBy = [](const std::vector<Eigen::Vector2d>& points, const Eigen::Vector2d& origin) {
+    SurfaceMemory memory = memoryOfASparseLine(panesRememberedLonger());
+    memory.confirmPanesAndMirrors(points, usableReturns(points), origin);
+    memory.forget(kOrigin, at(6.0));
+    return memory.size() == 1u;
+  };
+  // Just past its end the foot lies outside it: a return in what would be
+  // the lobe, and beams through it at x = 0.5 and 0.2, do not count.
+  const std::vector<Eigen::Vector2d> from_past_its_end = {{0.95, 1.0}, {-0.7, 3.0}, {-1.6, 3.0}};
+  EXPECT_FALSE(confirmedBy(from_past_its_end, {1.1, 0.0}));
+  const std::vector<Eigen::Vector2d> nothing_on_it = {{0.0, 3.0}, {-2.4, 3.0}, {2.4, 3.0}};
+  EXPECT_FALSE(confirmedBy(nothing_on_it, kOrigin));
+  // Returns on it in the lobe but no beam seen through it beyond the lobe:
+  // a line the frame could not have seen elsewhere says nothing.
+  const std::vector<Eigen::Vector2d> not_seen_through = {{0.0, 1.0}, {0.1, 1.0}};
+  EXPECT_FALSE(confirmedBy(not_seen_through, kOrigin));
+  EXPECT_TRUE(confirmedBy(aFrameFacing({0.0}), kOrigin));
+}
+
+TEST(SurfaceMemory, OnlySparseLinesAreConfirmedAndNeverLiveShorterThanTheLifetime) {
   // A wall a frame saw as a straight run is no sparse line: never a pane.
   SurfaceMemory wall = memoryOfAWall(panesRememberedLonger());
-  const auto head_on = returnsOnTheLineAt({0.0});
+  const auto head_on = aFrameFacing({0.0});
   wall.confirmPanesAndMirrors(head_on, usableReturns(head_on), kOrigin);
   wall.forget(kOrigin, at(6.0));
   EXPECT_EQ(wall.size(), 0u);
-  SurfaceMemoryParams off = panesRememberedLonger();
-  off.specular_lifetime = 0.0;
-  SurfaceMemory memory = memoryOfASparseLine(off);
+  SurfaceMemoryParams shorter = panesRememberedLonger();
+  shorter.specular_lifetime = 3.0;  // below the lifetime: the lifetime
+  SurfaceMemory memory = memoryOfASparseLine(shorter);
   memory.confirmPanesAndMirrors(head_on, usableReturns(head_on), kOrigin);
-  memory.forget(kOrigin, at(6.0));
-  EXPECT_EQ(memory.size(), 0u);
+  memory.forget(kOrigin, at(4.0));
+  EXPECT_EQ(memory.size(), 1u);
+}
+
+TEST(SurfaceMemory, AConfirmedPaneStaysOneWhenSeenAgainAsASparseLine) {
+  SurfaceMemory memory = memoryOfASparseLine(panesRememberedLonger());
+  const auto head_on = aFrameFacing({0.0});
+  memory.confirmPanesAndMirrors(head_on, usableReturns(head_on), kOrigin);
+  // Seen again over part of it at t = 10: the new piece and the rest, merged, are the pane.
+  const std::vector<StraightSegment> again = {{{0.0, 1.0}, {1.0, 1.0}, false, false}};
+  memory.rememberSegments(again, kOrigin, at(10.0), 0.0);
+  memory.forget(kOrigin, at(30.0));
+  EXPECT_EQ(memory.size(), 2u);
+  EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {-0.5, 2.0}, at(30.0))) << "the stretch not seen again";
+  EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {0.5, 2.0}, at(30.0))) << "the stretch seen again";
 }
 
 TEST(SurfaceMemory, TheMarginGrowsWithThePathDrivenSinceASurfaceWasSeen) {
@@ -526,16 +562,32 @@ TEST(SurfaceMemory, TheMarginGrowsWithThePathDrivenSinceASurfaceWasSeen) {
   params.lifetime = 1e3;
   params.drift_margin_per_m = 0.01;
   params.drift_margin_deg_per_m = 0.5;
-  SurfaceMemory memory = memoryOfAWall(params);  // y = 1, seen from the origin
-  memory.forget(kOrigin, at(0.0));
+  SurfaceMemory memory = memoryOfAWall(params);  // y = 1, seen from the origin at t = 0
   const Eigen::Vector2d ghost{0.0, 1.6};  // 0.6 m behind: beyond surface_margin 0.2 + 0.02 per m
   EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, ghost, at(1.0)));
-  // Drive 20 m along y = -1 and back (never crossing it): the margin grows by
-  // (0.01 + tan 0.5° · 1.6 m) · 20 m = 0.48 m.
+  // Drive to (10, -1) and back, never crossing it: 2 sqrt(101) = 20.1 m; the
+  // margin grows by (0.01 + tan 0.5° · 1.6 m) · 20.1 m = 0.48 m.
   memory.forget({10.0, -1.0}, at(10.0));
   memory.forget(kOrigin, at(20.0));
   EXPECT_FALSE(memory.liesBeyondASurface(kOrigin, ghost, at(20.0)));
   EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {0.0, 2.5}, at(20.0))) << "a ghost farther behind still is";
+  // Seen again: its margin starts again from the path driven now.
+  std::vector<Eigen::Vector2d> wall;
+  appendLine(wall, {-1.0, 1.0}, {1.0, 1.0});
+  memory.remember(wall, usableReturns(wall), kOrigin, at(20.0));
+  EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, ghost, at(20.0)));
+}
+
+TEST(SurfaceMemory, AlignmentJitterAtAStandstillDrivesNoPath) {
+  SurfaceMemoryParams params;
+  params.lifetime = 1e3;
+  params.drift_margin_per_m = 0.01;
+  params.drift_margin_deg_per_m = 0.5;
+  SurfaceMemory memory = memoryOfAWall(params);
+  // 2,000 frames, each origin 2 cm from the last (alternating): 40 m of
+  // steps, but the sensor stands still.
+  for (int k = 0; k < 2000; ++k) memory.forget({k % 2 ? 0.02 : 0.0, 0.0}, at(1.0 + k * 0.01));
+  EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {0.0, 1.6}, at(21.0)));
 }
 
 }  // namespace

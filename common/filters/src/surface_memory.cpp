@@ -17,6 +17,7 @@ std::optional<double> SurfaceMemory::Segment::crossingAlong(const Eigen::Vector2
 void SurfaceMemory::clear() {
   segments_.clear();
   path_ = 0.0;
+  path_anchor_.reset();
   last_remembered_.reset();
   last_origin_.reset();
 }
@@ -34,8 +35,12 @@ void SurfaceMemory::forget(const Eigen::Vector2d& origin, Stamp now) {
       return along && *along >= 0.0 && *along <= s.length;
     });
   }
-  if (last_origin_) path_ += (origin - *last_origin_).norm();
   last_origin_ = origin;
+  if (!path_anchor_) path_anchor_ = origin;
+  if (const double step = (origin - *path_anchor_).norm(); step >= kPathStep) {
+    path_ += step;
+    path_anchor_ = origin;
+  }
 }
 
 void SurfaceMemory::drop(const std::function<bool(const Segment&)>& gone) {
@@ -75,8 +80,8 @@ bool SurfaceMemory::beamPassesThrough(const Segment& s, const Eigen::Vector2d& o
   return along && s.insideEnds(*along);
 }
 
-double SurfaceMemory::surfaceMargin(const Eigen::Vector2d& origin, const Eigen::Vector2d& p) const {
-  return params_.surface_margin + params_.surface_margin_per_m * (p - origin).norm();
+double SurfaceMemory::surfaceMargin(double range) const {
+  return params_.surface_margin + params_.surface_margin_per_m * range;
 }
 
 double SurfaceMemory::driftMargin(const Segment& s, double range) const {
@@ -85,13 +90,12 @@ double SurfaceMemory::driftMargin(const Segment& s, double range) const {
   // range times that angle. The frames' alignment to the cache corrects the
   // drift only relative to frames of the last seconds.
   if (params_.drift_margin_per_m == 0.0 && params_.drift_margin_deg_per_m == 0.0) return 0.0;  // off: no work
-  const double heading = std::tan(degreesToRadians(params_.drift_margin_deg_per_m));
-  return (params_.drift_margin_per_m + heading * range) * (path_ - s.path_when_seen);
+  return (params_.drift_margin_per_m + drift_heading_per_m_ * range) * (path_ - s.path_when_seen);
 }
 
 bool SurfaceMemory::liesBeyondASurface(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now) const {
-  const double margin = surfaceMargin(origin, p);
   const double range = (p - origin).norm();
+  const double margin = surfaceMargin(range);
   const Eigen::Vector2d lo = origin.cwiseMin(p), hi = origin.cwiseMax(p);
   return std::any_of(segments_.begin(), segments_.end(), [&](const Segment& s) {
     const bool boxes_meet = (s.hi.array() >= lo.array()).all() && (s.lo.array() <= hi.array()).all();
@@ -115,7 +119,8 @@ bool SurfaceMemory::seenThroughHeadOn(const Segment& s, std::span<const Eigen::V
     const Eigen::Vector2d beam = p - origin;
     const double length = beam.norm();
     if (!(length > 0.0) || std::abs(s.unit.dot(beam)) > max_along * length) continue;  // not head-on
-    const double margin = surfaceMargin(origin, p);
+    // As when judging: a drifted pane's own head-on returns lie on it.
+    const double margin = surfaceMargin(length) + driftMargin(s, length);
     if (std::abs(s.normal.dot(p - s.a)) < margin) {
       const double along_line = s.unit.dot(p - s.a);
       if (along_line > 0.0 && along_line < s.length) return false;  // a return on it: it is still there
@@ -129,18 +134,24 @@ bool SurfaceMemory::seenThroughHeadOn(const Segment& s, std::span<const Eigen::V
 bool SurfaceMemory::confirmedHeadOn(const Segment& s, std::span<const Eigen::Vector2d> points,
                                     const BeamMask& returns, const Eigen::Vector2d& origin) const {
   const double foot = s.unit.dot(origin - s.a);
-  if (foot < 0.0 || foot > s.length) return false;  // the frame does not face it
+  if (!(foot >= 0.0 && foot <= s.length)) return false;  // the frame does not face it (NaN too)
   const double near = params_.specular_confirm_distance;
   const double lobe = std::abs(s.normal.dot(origin - s.a)) * std::tan(degreesToRadians(params_.head_on_deg)) + near;
-  int in_lobe = 0;
+  int in_lobe = 0, through_off_lobe = 0;
   for (std::size_t i = 0; i < points.size(); ++i) {
-    if (!returns[i] || std::abs(s.normal.dot(points[i] - s.a)) > near) continue;
-    const double along = s.unit.dot(points[i] - s.a);
-    if (along < 0.0 || along > s.length) continue;
-    if (std::abs(along - foot) > lobe) return false;  // returned off the lobe: no pane or mirror
-    ++in_lobe;
+    if (!returns[i]) continue;
+    const Eigen::Vector2d& p = points[i];
+    if (std::abs(s.normal.dot(p - s.a)) <= near) {
+      const double along = s.unit.dot(p - s.a);
+      if (along < 0.0 || along > s.length) continue;
+      if (std::abs(along - foot) > lobe) return false;  // returned off the lobe: no pane or mirror
+      ++in_lobe;
+      continue;
+    }
+    const std::optional<double> crossing = s.crossingAlong(origin, p);
+    through_off_lobe += crossing && *crossing >= 0.0 && *crossing <= s.length && std::abs(*crossing - foot) > lobe;
   }
-  return in_lobe > 0;
+  return in_lobe > 0 && through_off_lobe >= kMinBeamsThroughOffLobe;
 }
 
 void SurfaceMemory::confirmPanesAndMirrors(std::span<const Eigen::Vector2d> points, const BeamMask& returns,

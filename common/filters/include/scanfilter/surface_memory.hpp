@@ -1,6 +1,8 @@
 #pragma once
+#include <cmath>
 #include <cstddef>
 #include <functional>
+#include <numbers>
 #include <optional>
 #include <span>
 #include <vector>
@@ -28,11 +30,11 @@ struct SurfaceMemoryParams {
   std::size_t max_segments = 2000;          // the oldest go first beyond this (stamps that do not advance)
   double head_on_deg = 5.0;                 // degrees off a segment's normal where a mirror or pane returns the beam
   int head_on_through_beams = 2;            // beams seen through it there, none on it: it is gone; 0: never
-  // Panes and mirrors remembered longer (Beyond the paper 34; off by default).
-  double specular_lifetime = 0.0;           // s a confirmed pane or mirror is remembered; <= lifetime: lifetime
+  // Panes and mirrors remembered longer (Beyond the paper 34).
+  double specular_lifetime = 120.0;         // s a confirmed pane or mirror is remembered; <= lifetime: lifetime
   double specular_confirm_distance = 0.10;  // m, a return this near a segment's line lies on it when confirming
-  double drift_margin_per_m = 0.0;          // m of surface margin per m driven since a segment was seen
-  double drift_margin_deg_per_m = 0.0;      // ... and this heading drift per m driven, times the return's range
+  double drift_margin_per_m = 0.01;         // m of surface margin per m driven since a segment was seen
+  double drift_margin_deg_per_m = 0.5;      // ... and this heading drift per m driven, times the return's range
   StraightSegmentParams segments;
   // Surfaces the cache holds a return at a time, found by the penetration
   // filter (sparse_surfaces.hpp) and remembered here too.
@@ -64,22 +66,29 @@ struct SurfaceMemoryParams {
 // (forgetSeenThroughHeadOn: a door that opened).
 class SurfaceMemory {
  public:
-  explicit SurfaceMemory(const SurfaceMemoryParams& params) : params_(params) {}
+  explicit SurfaceMemory(const SurfaceMemoryParams& params)
+      : params_(params), drift_heading_per_m_(std::tan(params.drift_margin_deg_per_m * std::numbers::pi / 180.0)) {}
 
   bool enabled() const { return params_.lifetime > 0.0; }
   void clear();
-  // Forgets what was last seen more than the lifetime before `now`, and
-  // what the sensor's path since the last call crossed.
+  // Forgets what was last seen more than its lifetime before `now` (a
+  // confirmed pane or mirror: specular_lifetime), and what the sensor's path
+  // since the last call crossed; adds that path to the distance driven (the
+  // drift margin's clock).
   void forget(const Eigen::Vector2d& origin, Stamp now);
   // True when the return at p, seen from origin at `now`, lies beyond a
-  // remembered surface (one seen within the lifetime: judging without
-  // forgetting first still ignores older ones).
+  // remembered surface (one seen within its lifetime: judging without
+  // forgetting first still ignores older ones), by more than the surface
+  // margin and its growth with the path driven since (driftMargin).
   bool liesBeyondASurface(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now) const;
   // Confirms the sparse segments (rememberSegments) this frame faces as
-  // panes or mirrors: it sees returns on them only within head_on_deg of the
-  // foot of its perpendicular (their specular lobe), none elsewhere on them,
-  // where a row of chair legs returns at any angle. A confirmed one is
-  // remembered specular_lifetime (docs/accuracy.md, Beyond the paper 34).
+  // panes or mirrors: it sees returns on them only within the specular lobe
+  // (head_on_deg of the foot of its perpendicular, + specular_confirm_distance),
+  // none elsewhere on them, where a row of chair legs returns at any angle,
+  // and sees through them outside the lobe (so that a segment lying wholly
+  // in the lobe confirms nothing). A confirmed one is remembered
+  // specular_lifetime, and stays confirmed: what merges with it on its line
+  // is that surface (docs/accuracy.md, Beyond the paper 34).
   // `returns`: every beam with a return. A no-op with the rule off.
   void confirmPanesAndMirrors(std::span<const Eigen::Vector2d> points, const BeamMask& returns,
                               const Eigen::Vector2d& origin);
@@ -146,7 +155,7 @@ class SurfaceMemory {
   std::vector<Segment> merged(const Fresh& now, const std::vector<Segment>& olds) const;
   bool beamPassesThrough(const Segment& s, const Eigen::Vector2d& origin, const Eigen::Vector2d& p,
                          double surface_margin) const;
-  double surfaceMargin(const Eigen::Vector2d& origin, const Eigen::Vector2d& p) const;
+  double surfaceMargin(double range) const;
   // The margin's growth for s: the drift of the path driven since it was seen.
   double driftMargin(const Segment& s, double range) const;
   double lifetimeOf(const Segment& s) const;
@@ -164,7 +173,15 @@ class SurfaceMemory {
   std::vector<Segment> segments_;
   std::optional<Stamp> last_remembered_;
   std::optional<Eigen::Vector2d> last_origin_;
-  double path_ = 0.0;  // m the sensor has driven since clear(), as forget() saw it
+  double drift_heading_per_m_;  // tan(drift_margin_deg_per_m)
+  double path_ = 0.0;           // m the sensor has driven since clear(), counted in kPathStep steps
+  std::optional<Eigen::Vector2d> path_anchor_;  // where the sensor was when path_ last grew
+  // The path grows once the sensor is this far from where it last grew, so
+  // that the frames' alignment jitter at a standstill adds no distance.
+  static constexpr double kPathStep = 0.05;  // m
+  // A frame confirms a pane or a mirror only when at least this many of its
+  // beams pass through it outside the specular lobe.
+  static constexpr int kMinBeamsThroughOffLobe = 2;
 };
 
 }  // namespace scanfilter
