@@ -557,12 +557,21 @@ TEST(SurfaceMemory, AConfirmedPaneStaysOneWhenSeenAgainAsASparseLine) {
   EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {0.5, 2.0}, at(30.0))) << "the stretch seen again";
 }
 
-TEST(SurfaceMemory, TheMarginGrowsWithThePathDrivenSinceASurfaceWasSeen) {
-  SurfaceMemoryParams params;
-  params.lifetime = 1e3;
+// A pane at y = 1 confirmed by a frame at the origin at t = 0, never expiring.
+SurfaceMemory memoryOfAPaneThatDrifts() {
+  SurfaceMemoryParams params = panesRememberedLonger();
+  params.specular_lifetime = 1e3;
   params.drift_margin_per_m = 0.01;
   params.drift_margin_deg_per_m = 0.5;
-  SurfaceMemory memory = memoryOfAWall(params);  // y = 1, seen from the origin at t = 0
+  SurfaceMemory memory = memoryOfASparseLine(params);
+  const auto head_on = aFrameFacing({0.0});
+  memory.confirmPanesAndMirrors(head_on, usableReturns(head_on), kOrigin);
+  memory.forget(kOrigin, at(0.0));
+  return memory;
+}
+
+TEST(SurfaceMemory, APanesMarginGrowsWithThePathDrivenSinceItWasSeen) {
+  SurfaceMemory memory = memoryOfAPaneThatDrifts();
   const Eigen::Vector2d ghost{0.0, 1.6};  // 0.6 m behind: beyond surface_margin 0.2 + 0.02 per m
   EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, ghost, at(1.0)));
   // Drive to (10, -1) and back, never crossing it: 2 sqrt(101) = 20.1 m; the
@@ -572,18 +581,24 @@ TEST(SurfaceMemory, TheMarginGrowsWithThePathDrivenSinceASurfaceWasSeen) {
   EXPECT_FALSE(memory.liesBeyondASurface(kOrigin, ghost, at(20.0)));
   EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {0.0, 2.5}, at(20.0))) << "a ghost farther behind still is";
   // Seen again: its margin starts again from the path driven now.
-  std::vector<Eigen::Vector2d> wall;
-  appendLine(wall, {-1.0, 1.0}, {1.0, 1.0});
-  memory.remember(wall, usableReturns(wall), kOrigin, at(20.0));
+  const std::vector<StraightSegment> again = {{{-1.0, 1.0}, {1.0, 1.0}, false, false}};
+  memory.rememberSegments(again, kOrigin, at(20.0), 0.0);
   EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, ghost, at(20.0)));
 }
 
-TEST(SurfaceMemory, AlignmentJitterAtAStandstillDrivesNoPath) {
+TEST(SurfaceMemory, AWallsMarginDoesNotGrow) {
   SurfaceMemoryParams params;
   params.lifetime = 1e3;
   params.drift_margin_per_m = 0.01;
   params.drift_margin_deg_per_m = 0.5;
   SurfaceMemory memory = memoryOfAWall(params);
+  memory.forget({10.0, -1.0}, at(10.0));
+  memory.forget(kOrigin, at(20.0));
+  EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {0.0, 1.6}, at(20.0)));
+}
+
+TEST(SurfaceMemory, AlignmentJitterAtAStandstillDrivesNoPath) {
+  SurfaceMemory memory = memoryOfAPaneThatDrifts();
   // 2,000 frames, each origin 2 cm from the last (alternating): 40 m of
   // steps, but the sensor stands still.
   for (int k = 0; k < 2000; ++k) memory.forget({k % 2 ? 0.02 : 0.0, 0.0}, at(1.0 + k * 0.01));

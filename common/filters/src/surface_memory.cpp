@@ -89,7 +89,10 @@ double SurfaceMemory::driftMargin(const Segment& s, double range) const {
   // the heading by an angle per metre, which moves a return at `range` by
   // range times that angle. The frames' alignment to the cache corrects the
   // drift only relative to frames of the last seconds.
-  if (params_.drift_margin_per_m == 0.0 && params_.drift_margin_deg_per_m == 0.0) return 0.0;  // off: no work
+  // Only a pane or a mirror lives long enough for it to matter; a wall's
+  // margin growing too lost more re-observed returns on a Mines log with
+  // added drift (docs/accuracy.md, 34).
+  if (!s.pane_or_mirror) return 0.0;
   return (params_.drift_margin_per_m + drift_heading_per_m_ * range) * (path_ - s.path_when_seen);
 }
 

@@ -33,7 +33,7 @@ struct SurfaceMemoryParams {
   // Panes and mirrors remembered longer (Beyond the paper 34).
   double specular_lifetime = 120.0;         // s a confirmed pane or mirror is remembered; <= lifetime: lifetime
   double specular_confirm_distance = 0.10;  // m, a return this near a segment's line lies on it when confirming
-  double drift_margin_per_m = 0.01;         // m of surface margin per m driven since a segment was seen
+  double drift_margin_per_m = 0.01;         // m of a pane's surface margin per m driven since it was seen
   double drift_margin_deg_per_m = 0.5;      // ... and this heading drift per m driven, times the return's range
   StraightSegmentParams segments;
   // Surfaces the cache holds a return at a time, found by the penetration
@@ -79,7 +79,8 @@ class SurfaceMemory {
   // True when the return at p, seen from origin at `now`, lies beyond a
   // remembered surface (one seen within its lifetime: judging without
   // forgetting first still ignores older ones), by more than the surface
-  // margin and its growth with the path driven since (driftMargin).
+  // margin (a pane's or a mirror's growing with the path driven since it
+  // was seen: driftMargin).
   bool liesBeyondASurface(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now) const;
   // Confirms the sparse segments (rememberSegments) this frame faces as
   // panes or mirrors: it sees returns on them only within the specular lobe
@@ -156,7 +157,8 @@ class SurfaceMemory {
   bool beamPassesThrough(const Segment& s, const Eigen::Vector2d& origin, const Eigen::Vector2d& p,
                          double surface_margin) const;
   double surfaceMargin(double range) const;
-  // The margin's growth for s: the drift of the path driven since it was seen.
+  // The margin's growth for a pane or a mirror: the drift of the path
+  // driven since it was seen (0 for any other segment).
   double driftMargin(const Segment& s, double range) const;
   double lifetimeOf(const Segment& s) const;
   bool confirmedHeadOn(const Segment& s, std::span<const Eigen::Vector2d> points, const BeamMask& returns,
