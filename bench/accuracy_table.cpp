@@ -31,14 +31,13 @@ void row(const std::string& scene, const std::string& filter, const RemovalScore
 // the view external labelled simulators report.
 void causeTable(const std::vector<std::pair<std::string, RemovalScore>>& scores) {
   std::printf("\n| filter: recall by cause (artefacts) |");
-  for (int c = 1; c < kArtefactCauseCount; ++c) std::printf(" %s |", artefactCauseName(static_cast<ArtefactCause>(c)));
+  for (ArtefactCause cause : kEveryArtefactCause) std::printf(" %s |", artefactCauseName(cause));
   std::printf("\n|---|");
-  for (int c = 1; c < kArtefactCauseCount; ++c) std::printf("---|");
+  for (std::size_t c = 0; c < kEveryArtefactCause.size(); ++c) std::printf("---|");
   std::printf("\n");
   for (const auto& [name, score] : scores) {
     std::printf("| %s |", name.c_str());
-    for (int c = 1; c < kArtefactCauseCount; ++c) {
-      const auto cause = static_cast<ArtefactCause>(c);
+    for (ArtefactCause cause : kEveryArtefactCause) {
       if (score.causeTruth(cause) == 0)
         std::printf(" - |");  // the sensor makes none
       else

@@ -79,8 +79,8 @@ TEST(Simulator, EveryArtefactAndOnlyAnArtefactHasACause) {
   EXPECT_EQ(without_cause, 0u);
   EXPECT_EQ(cause_without_artefact, 0u);
   EXPECT_EQ(wrong_step, 0u);
-  for (int c = 1; c < kArtefactCauseCount; ++c)
-    EXPECT_GT(causes[static_cast<std::size_t>(c)], 0u) << artefactCauseName(static_cast<ArtefactCause>(c));
+  for (ArtefactCause cause : kEveryArtefactCause)
+    EXPECT_GT(causes[static_cast<std::size_t>(cause)], 0u) << artefactCauseName(cause);
 }
 
 // Ghosts lie behind the surface the beam hit: farther than the truth range.

@@ -536,8 +536,10 @@ TEST(SurfaceMemory, OnlySparseLinesAreConfirmedAndNeverLiveShorterThanTheLifetim
   wall.confirmPanesAndMirrors(head_on, usableReturns(head_on), kOrigin);
   wall.forget(kOrigin, at(6.0));
   EXPECT_EQ(wall.size(), 0u);
+  // With specular_lifetime below the lifetime nothing is confirmed: a pane
+  // lives the lifetime, not the 3 s.
   SurfaceMemoryParams shorter = panesRememberedLonger();
-  shorter.specular_lifetime = 3.0;  // below the lifetime: the lifetime
+  shorter.specular_lifetime = 3.0;
   SurfaceMemory memory = memoryOfASparseLine(shorter);
   memory.confirmPanesAndMirrors(head_on, usableReturns(head_on), kOrigin);
   memory.forget(kOrigin, at(4.0));

@@ -86,33 +86,29 @@ void causeTable(std::ostream& out, const std::vector<TunedFamily>& tuned, const 
   // Recall alone flatters a filter that deletes everything: the valid
   // returns it deleted stand beside it.
   out << "| filter (tuned): recall by cause |";
-  for (int c = 1; c < kArtefactCauseCount; ++c) out << " " << artefactCauseName(static_cast<ArtefactCause>(c)) << " |";
+  for (ArtefactCause cause : kEveryArtefactCause) out << " " << artefactCauseName(cause) << " |";
   out << " valid deleted |\n|---|";
-  for (int c = 1; c < kArtefactCauseCount; ++c) out << "---|";
+  for (std::size_t c = 0; c < kEveryArtefactCause.size(); ++c) out << "---|";
   out << "---|\n";
   for (std::size_t f = 0; f < tuned.size(); ++f) {
+    const RemovalScore& s = scored[f].score;
     out << "| " << tuned[f].family->name << " |";
-    for (int c = 1; c < kArtefactCauseCount; ++c) {
-      const auto cause = static_cast<ArtefactCause>(c);
-      const RemovalScore& s = scored[f].score;
+    for (ArtefactCause cause : kEveryArtefactCause)
       out << " " << (s.causeTruth(cause) ? fmt("%.3f", s.causeRecall(cause)) : std::string("-")) << " |";
-    }
-    out << " " << pct(scored[f].score.falseDeletionRate()) << " |\n";
+    out << " " << pct(s.falseDeletionRate()) << " |\n";
   }
 }
 
 void causeChart(const std::string& path, const std::vector<TunedFamily>& tuned, const std::vector<ScoredFilter>& scored) {
   std::vector<std::string> causes;
-  for (int c = 1; c < kArtefactCauseCount; ++c) causes.emplace_back(artefactCauseName(static_cast<ArtefactCause>(c)));
+  for (ArtefactCause cause : kEveryArtefactCause) causes.emplace_back(artefactCauseName(cause));
   GroupedBarChart chart("Recall by cause of artefact (tuned)", causes);
   for (std::size_t f = 0; f < tuned.size(); ++f) {
+    const RemovalScore& s = scored[f].score;
     std::vector<double> recall;
-    for (int c = 1; c < kArtefactCauseCount; ++c) {
-      const auto cause = static_cast<ArtefactCause>(c);
-      const RemovalScore& s = scored[f].score;
-      recall.push_back(s.causeTruth(cause) ? s.causeRecall(cause) : std::nan(""));
-    }
-    const std::string valid_deleted = pct(scored[f].score.falseDeletionRate()) + " valid deleted";
+    for (ArtefactCause cause : kEveryArtefactCause)
+      recall.push_back(s.causeTruth(cause) ? s.causeRecall(cause) : std::nan(""));  // NaN: no bar
+    const std::string valid_deleted = pct(s.falseDeletionRate()) + " valid deleted";
     chart.addSeries(tuned[f].family->name + ": " + valid_deleted, std::move(recall), seriesColour(f));
   }
   chart.draw().save(path);

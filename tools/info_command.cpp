@@ -60,13 +60,16 @@ int runInfo(const InfoOptions& options) {
   };
   if (with_truth > 0) counts("truth by code:", truth_counts);
   if (labelled > 0) counts("labels:   ", label_counts);
-  std::size_t artefacts_with_cause = 0;
-  for (int c = 1; c < kArtefactCauseCount; ++c) artefacts_with_cause += cause_counts[static_cast<std::size_t>(c)];
-  if (artefacts_with_cause > 0) {
+  const auto count = [&](ArtefactCause c) { return cause_counts[static_cast<std::size_t>(c)]; };
+  std::size_t with_cause = 0;
+  for (ArtefactCause c : kEveryArtefactCause) with_cause += count(c);
+  if (with_cause > 0) {
     std::cout << "truth by cause:";
-    for (int c = 1; c < kArtefactCauseCount; ++c)
-      std::cout << " " << artefactCauseName(static_cast<ArtefactCause>(c)) << "="
-                << cause_counts[static_cast<std::size_t>(c)] << (c + 1 < kArtefactCauseCount ? "," : "");
+    const char* separator = " ";
+    for (ArtefactCause c : kEveryArtefactCause) {
+      std::cout << separator << artefactCauseName(c) << "=" << count(c);
+      separator = ", ";
+    }
     std::cout << "\n";
   }
   return 0;

@@ -15,13 +15,12 @@ constexpr int kCauseColumn = 31;  // characters: "displaced at grazing incidence
 // What the simulator says made each artefact, and the share of each removed.
 void printRecallByCause(std::ostream& out, const RemovalScore& score) {
   bool any = false;
-  for (int c = 1; c < kArtefactCauseCount; ++c) any = any || score.causeTruth(static_cast<ArtefactCause>(c)) > 0;
+  for (ArtefactCause cause : kEveryArtefactCause) any = any || score.causeTruth(cause) > 0;
   if (!any) return;
   out << "recall by cause (simulator truth):\n";
   out << "  " << std::left << std::setw(kCauseColumn) << "cause" << std::right << std::setw(9) << "truth" << std::setw(10)
       << "recall" << "\n";
-  for (int c = 1; c < kArtefactCauseCount; ++c) {
-    const auto cause = static_cast<ArtefactCause>(c);
+  for (ArtefactCause cause : kEveryArtefactCause) {
     if (score.causeTruth(cause) == 0) continue;
     out << "  " << std::left << std::setw(kCauseColumn) << artefactCauseName(cause) << std::right << std::setw(9)
         << score.causeTruth(cause) << std::setw(10) << score.causeRecall(cause) << "\n";

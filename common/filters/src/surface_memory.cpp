@@ -14,6 +14,9 @@ std::optional<double> SurfaceMemory::Segment::crossingAlong(const Eigen::Vector2
   return unit.dot(p0 + (p1 - p0) * (d0 / (d0 - d1)) - a);
 }
 
+SurfaceMemory::SurfaceMemory(const SurfaceMemoryParams& params)
+    : params_(params), drift_heading_per_m_(std::tan(degreesToRadians(params.drift_margin_deg_per_m))) {}
+
 void SurfaceMemory::clear() {
   segments_.clear();
   path_ = 0.0;
@@ -23,7 +26,9 @@ void SurfaceMemory::clear() {
 }
 
 double SurfaceMemory::lifetimeOf(const Segment& s) const {
-  return s.pane_or_mirror ? std::max(params_.lifetime, params_.specular_lifetime) : params_.lifetime;
+  // Never shorter than lifetime: with specular_lifetime at most that, no
+  // segment is confirmed (confirmPanesAndMirrors).
+  return s.pane_or_mirror ? params_.specular_lifetime : params_.lifetime;
 }
 
 void SurfaceMemory::forget(const Eigen::Vector2d& origin, Stamp now) {
@@ -159,7 +164,7 @@ bool SurfaceMemory::confirmedHeadOn(const Segment& s, std::span<const Eigen::Vec
 
 void SurfaceMemory::confirmPanesAndMirrors(std::span<const Eigen::Vector2d> points, const BeamMask& returns,
                                            const Eigen::Vector2d& origin) {
-  if (params_.specular_lifetime <= params_.lifetime) return;
+  if (params_.specular_lifetime <= params_.lifetime) return;  // the rule is off: panes live as long as walls
   for (Segment& s : segments_)
     if (s.sparse && !s.pane_or_mirror) s.pane_or_mirror = confirmedHeadOn(s, points, returns, origin);
 }

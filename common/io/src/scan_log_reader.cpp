@@ -110,7 +110,7 @@ struct CodeKind {
   const char* many;  // "expected an array of <many>"
 };
 constexpr CodeKind kPointCodes{kPointCodeCount, "a point code", "point codes"};
-constexpr CodeKind kArtefactCauses{kArtefactCauseCount, "an artefact cause", "artefact causes"};
+constexpr CodeKind kArtefactCauseCodes{kArtefactCauseCount, "an artefact cause", "artefact causes"};
 
 std::vector<std::uint8_t> parseCodes(const Json& array, const char* key, std::size_t expected, CodeKind kind,
                                      const FieldChecker& check) {
@@ -253,7 +253,7 @@ void ScanLogReader::parseScan(const Json& object, std::string_view stamp_text, S
   if (const auto it = object.find("labels"); it != object.end())
     scan.labels = parseCodes(*it, "labels", n, kPointCodes, check);
   if (const auto it = object.find("truth_cause"); it != object.end())
-    scan.truth_cause = parseCodes(*it, "truth_cause", n, kArtefactCauses, check);
+    scan.truth_cause = parseCodes(*it, "truth_cause", n, kArtefactCauseCodes, check);
   if (const auto it = object.find("truth_thin_leg"); it != object.end()) {
     if (!it->is_array()) check.fail("truth_thin_leg", "expected an array of beam indices");
     for (std::size_t k = 0; k < it->size(); ++k) {

@@ -1,8 +1,6 @@
 #pragma once
-#include <cmath>
 #include <cstddef>
 #include <functional>
-#include <numbers>
 #include <optional>
 #include <span>
 #include <vector>
@@ -66,8 +64,7 @@ struct SurfaceMemoryParams {
 // (forgetSeenThroughHeadOn: a door that opened).
 class SurfaceMemory {
  public:
-  explicit SurfaceMemory(const SurfaceMemoryParams& params)
-      : params_(params), drift_heading_per_m_(std::tan(params.drift_margin_deg_per_m * std::numbers::pi / 180.0)) {}
+  explicit SurfaceMemory(const SurfaceMemoryParams& params);
 
   bool enabled() const { return params_.lifetime > 0.0; }
   void clear();

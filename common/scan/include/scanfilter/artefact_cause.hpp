@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <cstdint>
 
 namespace scanfilter {
@@ -18,6 +19,12 @@ enum class ArtefactCause : std::uint8_t {
 };
 
 inline constexpr int kArtefactCauseCount = 7;
+
+// The causes of an artefact (kNone left out), in code order: what a report
+// lists.
+inline constexpr std::array<ArtefactCause, kArtefactCauseCount - 1> kEveryArtefactCause = {
+    ArtefactCause::kMirrorGhost,   ArtefactCause::kThroughPane,         ArtefactCause::kEdgeMix,
+    ArtefactCause::kThinObjectMix, ArtefactCause::kGrazingDisplacement, ArtefactCause::kJunctionDisplacement};
 
 inline constexpr bool isValidArtefactCause(int cause) { return cause >= 0 && cause < kArtefactCauseCount; }
 
