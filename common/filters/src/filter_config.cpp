@@ -88,6 +88,21 @@ void readSparseSurfaces(const YamlSection& parent, SparseSurfaceParams& p, doubl
   s.rejectUnknownKeys();
 }
 
+void readMirrorGhosts(const YamlSection& parent, MirrorGhostParams& g) {
+  YamlSection s(parent.node(), "mirror_ghosts", parent.file(), parent.path());
+  s.read("enabled", g.enabled);
+  s.read("image_radius", g.image_radius);
+  s.read("line_window", g.line_window);
+  s.read("line_tolerance", g.line_tolerance);
+  s.read("line_spread", g.line_spread);
+  s.requireRange("image_radius", g.image_radius, 1e-3, 1.0, "0.001 <= value <= 1 (m)");
+  s.requireRange("line_window", g.line_window, 1e-3, 10.0, "0.001 <= value <= 10 (m)");
+  s.requireRange("line_tolerance", g.line_tolerance, 0.0, 1.0, "0 <= value <= 1 (m)");
+  s.requireRange("line_spread", g.line_spread, 0.0, 2.0 * g.line_window,
+                 "0 <= value <= 2 x line_window (m: the returns lie within line_window either side)");
+  s.rejectUnknownKeys();
+}
+
 void readSurfaceMemory(const YamlSection& parent, SurfaceMemoryParams& m, double& sparse_support_reference_deg) {
   YamlSection s(parent.node(), "surface_memory", parent.file(), parent.path());
   s.read("lifetime", m.lifetime);
@@ -103,6 +118,7 @@ void readSurfaceMemory(const YamlSection& parent, SurfaceMemoryParams& m, double
   s.read("head_on_through_beams", m.head_on_through_beams);
   s.read("specular_lifetime", m.specular_lifetime);
   s.read("specular_confirm_distance", m.specular_confirm_distance);
+  s.read("specular_min_pass_share", m.specular_min_pass_share);
   s.read("drift_margin_per_m", m.drift_margin_per_m);
   s.read("drift_margin_deg_per_m", m.drift_margin_deg_per_m);
   s.read("max_spacing", m.segments.max_spacing);
@@ -113,6 +129,8 @@ void readSurfaceMemory(const YamlSection& parent, SurfaceMemoryParams& m, double
   s.read("max_gap", m.segments.max_gap);
   s.take("sparse_surfaces");
   readSparseSurfaces(s, m.sparse_surfaces, sparse_support_reference_deg);
+  s.take("mirror_ghosts");
+  readMirrorGhosts(s, m.mirror_ghosts);
   s.requireRange("lifetime", m.lifetime, 0.0, 1e6, "a value >= 0 (s; 0: off)");
   s.requireRange("min_interval", m.min_interval, 0.0, 60.0, "0 <= value <= 60 (s)");
   s.requireRange("min_beam_surface_angle_deg", m.min_beam_surface_angle_deg, 0.0, 90.0,
@@ -129,6 +147,8 @@ void readSurfaceMemory(const YamlSection& parent, SurfaceMemoryParams& m, double
   s.requireRange("specular_lifetime", m.specular_lifetime, 0.0, 1e6,
                  "a value >= 0 (s; at most lifetime: panes and mirrors live as long as any surface)");
   s.requireRange("specular_confirm_distance", m.specular_confirm_distance, 1e-3, 1.0, "0.001 <= value <= 1 (m)");
+  s.requireRange("specular_min_pass_share", m.specular_min_pass_share, 0.0, 1.0,
+                 "0 <= value <= 1 (1: no beam off the lobe may return on it)");
   s.requireRange("drift_margin_per_m", m.drift_margin_per_m, 0.0, 1.0, "0 <= value <= 1 (m per m driven; 0: off)");
   s.requireRange("drift_margin_deg_per_m", m.drift_margin_deg_per_m, 0.0, 45.0,
                  "0 <= value <= 45 (degrees per m driven; 0: off)");

@@ -46,6 +46,7 @@ PenetrationFilter::PenetrationFilter(const PenetrationFilterParams& params)
       free_space_(params),
       thin_objects_(params.edge_depth_step, params.thin_object_radius),
       memory_(params.surface_memory),
+      mirror_ghosts_(params.surface_memory.mirror_ghosts),
       // Every count it sizes is the rescue's evidence: without the rescue
       // nothing asks, and the noise is not measured.
       evidence_radius_({.min_radius = params.rescue_radius,
@@ -526,7 +527,9 @@ void PenetrationFilter::markBeyondRememberedSurfaces(Stamp stamp, const Eigen::V
                                                      std::span<std::uint8_t> labels) const {
   for (std::size_t i = 0; i < labels.size(); ++i) {
     if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid)) continue;
-    if (memory_.liesBeyondASurface(origin, points_[i], stamp))
+    const auto ghost = [&](const MirrorCrossing& crossing) { return mirror_ghosts_.isGhost(crossing, grid_); };
+    if (memory_.liesBeyondASurface(origin, points_[i], stamp) ||
+        (mirror_ghosts_.enabled() && memory_.anyMirrorBehind(origin, points_[i], stamp, ghost)))
       labels[i] = static_cast<std::uint8_t>(PointCode::kMisdetected);
   }
 }

@@ -112,6 +112,20 @@ bool SurfaceMemory::liesBeyondASurface(const Eigen::Vector2d& origin, const Eige
   });
 }
 
+bool SurfaceMemory::anyMirrorBehind(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now,
+                                    const std::function<bool(const MirrorCrossing&)>& pred) const {
+  const double range = (p - origin).norm();
+  const double margin = surfaceMargin(range);
+  return std::any_of(segments_.begin(), segments_.end(), [&](const Segment& s) {
+    if (!s.pane_or_mirror || now.secondsSince(s.last_seen) > lifetimeOf(s)) return false;
+    const double beyond = s.normal.dot(p - s.a);
+    if (!(std::abs(beyond) >= margin + driftMargin(s, range))) return false;  // on the line (NaN too)
+    const std::optional<double> along = s.crossingAlong(origin, p);  // nullopt: p on the sensor's side
+    return along && pred({s.a + s.unit * *along, s.unit, p - 2.0 * beyond * s.normal,
+                          *along >= 0.0 && *along <= s.length});
+  });
+}
+
 bool SurfaceMemory::seenThroughHeadOn(const Segment& s, std::span<const Eigen::Vector2d> points,
                                       const BeamMask& returns, const Eigen::Vector2d& origin) const {
   // Only a segment the sensor faces, the foot of its perpendicular inside
@@ -145,21 +159,21 @@ bool SurfaceMemory::confirmedHeadOn(const Segment& s, std::span<const Eigen::Vec
   if (!(foot >= 0.0 && foot <= s.length)) return false;  // the frame does not face it (NaN too)
   const double near = params_.specular_confirm_distance;
   const double lobe = std::abs(s.normal.dot(origin - s.a)) * std::tan(degreesToRadians(params_.head_on_deg)) + near;
-  int in_lobe = 0, through_off_lobe = 0;
+  int in_lobe = 0, on_off_lobe = 0, through_off_lobe = 0;
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!returns[i]) continue;
     const Eigen::Vector2d& p = points[i];
     if (std::abs(s.normal.dot(p - s.a)) <= near) {
       const double along = s.unit.dot(p - s.a);
       if (along < 0.0 || along > s.length) continue;
-      if (std::abs(along - foot) > lobe) return false;  // returned off the lobe: no pane or mirror
-      ++in_lobe;
+      ++(std::abs(along - foot) > lobe ? on_off_lobe : in_lobe);
       continue;
     }
     const std::optional<double> crossing = s.crossingAlong(origin, p);
     through_off_lobe += crossing && *crossing >= 0.0 && *crossing <= s.length && std::abs(*crossing - foot) > lobe;
   }
-  return in_lobe > 0 && through_off_lobe >= kMinBeamsThroughOffLobe;
+  return in_lobe > 0 && through_off_lobe >= kMinBeamsThroughOffLobe &&
+         through_off_lobe >= params_.specular_min_pass_share * (through_off_lobe + on_off_lobe);
 }
 
 void SurfaceMemory::confirmPanesAndMirrors(std::span<const Eigen::Vector2d> points, const BeamMask& returns,

@@ -16,6 +16,7 @@
 #include "scanfilter/frame_alignment.hpp"
 #include "scanfilter/free_space_check.hpp"
 #include "scanfilter/implementation.hpp"
+#include "scanfilter/mirror_ghost_check.hpp"
 #include "scanfilter/obstacle_window.hpp"
 #include "scanfilter/penetration_evidence.hpp"
 #include "scanfilter/penetration_filter_params.hpp"
@@ -216,8 +217,9 @@ class PenetrationFilter {
   template <typename Pred>
   bool anyCellAlongBeam(const Eigen::Vector2d& origin, const Eigen::Vector2d& unit, double from, double to,
                         double angle_step, CellsThatCount cells, Pred&& pred) const;
-  // surface_memory: kept returns beyond a remembered surface become
-  // misdetected (points_ and `origin` placed as judged).
+  // surface_memory: kept returns beyond a remembered surface, and the
+  // ghosts of remembered mirrors (mirror_ghosts_), become misdetected
+  // (points_ and `origin` placed as judged).
   void markBeyondRememberedSurfaces(Stamp stamp, const Eigen::Vector2d& origin,
                                     std::span<std::uint8_t> labels) const;
   // With rescue_min_baseline: the cached frames taken at least that far from
@@ -241,6 +243,7 @@ class PenetrationFilter {
   FreeSpaceCheck free_space_;
   ThinObjectCheck thin_objects_;
   SurfaceMemory memory_;
+  MirrorGhostCheck mirror_ghosts_;
   // Measured on every scan; kept across resets (the sensor's noise does not change with the cache).
   EvidenceRadius evidence_radius_;
   EdgeSmearZone smear_zone_;

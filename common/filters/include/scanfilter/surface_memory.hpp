@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include "scanfilter/beam_mask.hpp"
+#include "scanfilter/mirror_ghost_check.hpp"
 #include "scanfilter/sparse_surfaces.hpp"
 #include "scanfilter/stamp.hpp"
 #include "scanfilter/straight_segments.hpp"
@@ -31,8 +32,11 @@ struct SurfaceMemoryParams {
   // Panes and mirrors remembered longer (Beyond the paper 34).
   double specular_lifetime = 120.0;         // s a confirmed pane or mirror is remembered; <= lifetime: lifetime
   double specular_confirm_distance = 0.10;  // m, a return this near a segment's line lies on it when confirming
+  double specular_min_pass_share = 0.5;     // of the beams meeting it off the lobe, the share that must pass
   double drift_margin_per_m = 0.01;         // m of a pane's surface margin per m driven since it was seen
   double drift_margin_deg_per_m = 0.5;      // ... and this heading drift per m driven, times the return's range
+  // Ghosts found as mirror images of what the cache holds (Beyond the paper 35).
+  MirrorGhostParams mirror_ghosts;
   StraightSegmentParams segments;
   // Surfaces the cache holds a return at a time, found by the penetration
   // filter (sparse_surfaces.hpp) and remembered here too.
@@ -79,12 +83,19 @@ class SurfaceMemory {
   // margin (a pane's or a mirror's growing with the path driven since it
   // was seen: driftMargin).
   bool liesBeyondASurface(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now) const;
+  // Whether pred holds for a crossing of the beam from origin to p with the
+  // line of a confirmed pane or mirror (one seen within its lifetime), on
+  // the remembered stretch or anywhere past it, p lying beyond that line by
+  // more than the surface margin (driftMargin's too). Stops at the first.
+  bool anyMirrorBehind(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now,
+                       const std::function<bool(const MirrorCrossing&)>& pred) const;
   // Confirms the sparse segments (rememberSegments) this frame faces as
-  // panes or mirrors: it sees returns on them only within the specular lobe
+  // panes or mirrors: it sees returns on them within the specular lobe
   // (head_on_deg of the foot of its perpendicular, + specular_confirm_distance),
-  // none elsewhere on them, where a row of chair legs returns at any angle,
-  // and sees through them outside the lobe (so that a segment lying wholly
-  // in the lobe confirms nothing). A confirmed one is remembered
+  // and outside the lobe at least specular_min_pass_share of the beams that
+  // meet them pass through (2 or more: a segment lying wholly in the lobe
+  // confirms nothing), where a row of chair legs returns most of them. A
+  // glossy surface returns some beams at any angle (Beyond the paper 35). A confirmed one is remembered
   // specular_lifetime, and stays confirmed: what merges with it on its line
   // is that surface (docs/accuracy.md, Beyond the paper 34).
   // `returns`: every beam with a return. A no-op with the rule off.
