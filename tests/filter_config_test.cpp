@@ -88,6 +88,12 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(sm.specular_confirm_distance, dm.specular_confirm_distance);
   EXPECT_EQ(sm.drift_margin_per_m, dm.drift_margin_per_m);
   EXPECT_EQ(sm.drift_margin_deg_per_m, dm.drift_margin_deg_per_m);
+  EXPECT_EQ(sm.specular_min_pass_share, dm.specular_min_pass_share);
+  EXPECT_EQ(sm.mirror_ghosts.enabled, dm.mirror_ghosts.enabled);
+  EXPECT_EQ(sm.mirror_ghosts.image_radius, dm.mirror_ghosts.image_radius);
+  EXPECT_EQ(sm.mirror_ghosts.line_window, dm.mirror_ghosts.line_window);
+  EXPECT_EQ(sm.mirror_ghosts.line_tolerance, dm.mirror_ghosts.line_tolerance);
+  EXPECT_EQ(sm.mirror_ghosts.line_spread, dm.mirror_ghosts.line_spread);
   EXPECT_EQ(sm.segments.max_spacing, dm.segments.max_spacing);
   EXPECT_EQ(sm.segments.max_deviation, dm.segments.max_deviation);
   EXPECT_EQ(sm.segments.min_returns, dm.segments.min_returns);
@@ -137,6 +143,21 @@ TEST(FilterConfig, ReadsThePaneAndMirrorMemoryKeys) {
   EXPECT_EQ(m.specular_confirm_distance, 0.2);
   EXPECT_EQ(m.drift_margin_per_m, 0.01);
   EXPECT_EQ(m.drift_margin_deg_per_m, 0.5);
+}
+
+TEST(FilterConfig, ReadsTheMirrorGhostKeys) {
+  const FilterConfig c = parseFilterConfig(
+      "penetration_filter:\n  surface_memory:\n    specular_min_pass_share: 0.7\n    mirror_ghosts:\n"
+      "      enabled: false\n      image_radius: 0.05\n      line_window: 0.4\n      line_tolerance: 0.03\n"
+      "      line_spread: 0.2\n",
+      "f.yaml");
+  const SurfaceMemoryParams& m = c.params.penetration.surface_memory;
+  EXPECT_EQ(m.specular_min_pass_share, 0.7);
+  EXPECT_FALSE(m.mirror_ghosts.enabled);
+  EXPECT_EQ(m.mirror_ghosts.image_radius, 0.05);
+  EXPECT_EQ(m.mirror_ghosts.line_window, 0.4);
+  EXPECT_EQ(m.mirror_ghosts.line_tolerance, 0.03);
+  EXPECT_EQ(m.mirror_ghosts.line_spread, 0.2);
 }
 
 TEST(FilterConfig, AutoValuesComeFromTheSensor) {
@@ -236,6 +257,16 @@ TEST(FilterConfigErrors, NameFileLineAndKey) {
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    drift_margin_deg_per_m: 50\n"),
             "f.yaml:3: penetration_filter.surface_memory.drift_margin_deg_per_m: expected 0 <= value <= 45 (degrees "
             "per m driven; 0: off)");
+  EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    specular_min_pass_share: 1.5\n"),
+            "f.yaml:3: penetration_filter.surface_memory.specular_min_pass_share: expected 0 <= value <= 1 (1: no beam "
+            "off the lobe may return on it)");
+  EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    mirror_ghosts:\n      line_spread: 0.7\n"),
+            "f.yaml:4: penetration_filter.surface_memory.mirror_ghosts.line_spread: expected 0 <= value <= 2 x "
+            "line_window (m: the returns lie within line_window either side)");
+  EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    mirror_ghosts:\n      image_radius: 0\n"),
+            "f.yaml:4: penetration_filter.surface_memory.mirror_ghosts.image_radius: expected 0.001 <= value <= 1 (m)");
+  EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    mirror_ghosts:\n      radius: 0.1\n"),
+            "f.yaml:4: penetration_filter.surface_memory.mirror_ghosts.radius: unknown key");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    head_on_through_beams: -1\n"),
             "f.yaml:3: penetration_filter.surface_memory.head_on_through_beams: expected an integer >= 0 (0: never "
             "forget so)");

@@ -2,6 +2,7 @@
 // which are remembered, and which later returns lie beyond them.
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -500,13 +501,32 @@ TEST(SurfaceMemory, TheLobeWidensWithDistance) {
   EXPECT_EQ(memory.size(), 1u);
 }
 
-TEST(SurfaceMemory, ASparseLineWithReturnsOffItsLobeIsNoPane) {
-  // A row of chair legs returns at any angle: one return off the lobe.
+TEST(SurfaceMemory, ASparseLineThatReturnsMostBeamsOffItsLobeIsNoPane) {
+  // A row of chair legs returns at any angle: off the lobe (0.19 m) six
+  // beams end on it, four pass through it (aFrameFacing's).
   SurfaceMemory memory = memoryOfASparseLine(panesRememberedLonger());
-  const auto legs = aFrameFacing({0.0, 0.6});
+  const auto legs = aFrameFacing({0.0, 0.3, 0.45, 0.6, -0.3, -0.45, -0.6});
   memory.confirmPanesAndMirrors(legs, usableReturns(legs), kOrigin);
   memory.forget(kOrigin, at(6.0));
   EXPECT_EQ(memory.size(), 0u);
+}
+
+TEST(SurfaceMemory, AGlossySurfaceThatReturnsSomeBeamsOffItsLobeIsAMirror) {
+  // Beyond the paper 35: a glossy wall returns a beam now and then at any
+  // angle. Off the lobe one beam ends on it and four pass through it.
+  const auto glossy = aFrameFacing({0.0, 0.6});
+  const auto confirmedWithShare = [&](double share) {
+    SurfaceMemoryParams params = panesRememberedLonger();
+    params.specular_min_pass_share = share;
+    SurfaceMemory memory = memoryOfASparseLine(params);
+    memory.confirmPanesAndMirrors(glossy, usableReturns(glossy), kOrigin);
+    memory.forget(kOrigin, at(6.0));
+    return memory.size() == 1u;
+  };
+  EXPECT_TRUE(confirmedWithShare(0.5));
+  EXPECT_TRUE(confirmedWithShare(0.8)) << "4 of 5 pass";
+  EXPECT_FALSE(confirmedWithShare(0.81));
+  EXPECT_FALSE(confirmedWithShare(1.0)) << "1: no beam off the lobe may end on it";
 }
 
 TEST(SurfaceMemory, AFrameConfirmsOnlyALineItFacesSeesOnAndSeesThrough) {
@@ -544,6 +564,38 @@ TEST(SurfaceMemory, OnlySparseLinesAreConfirmedAndNeverLiveShorterThanTheLifetim
   memory.confirmPanesAndMirrors(head_on, usableReturns(head_on), kOrigin);
   memory.forget(kOrigin, at(4.0));
   EXPECT_EQ(memory.size(), 1u);
+}
+
+TEST(SurfaceMemory, AReturnBeyondAMirrorsLineIsMirroredAcrossIt) {
+  // Beyond the paper 35: the mirror at y = 1, x from -1 to 1, confirmed.
+  SurfaceMemory memory = memoryOfASparseLine(panesRememberedLonger());
+  const auto head_on = aFrameFacing({0.0});
+  memory.confirmPanesAndMirrors(head_on, usableReturns(head_on), kOrigin);
+  const auto crossingOf = [&](const Eigen::Vector2d& p) {
+    std::optional<MirrorCrossing> found;
+    memory.anyMirrorBehind(kOrigin, p, at(1.0), [&](const MirrorCrossing& c) {
+      found = c;
+      return true;
+    });
+    return found;
+  };
+  const std::optional<MirrorCrossing> on_it = crossingOf({0.5, 2.0});
+  ASSERT_TRUE(on_it.has_value());
+  EXPECT_TRUE(on_it->within_segment);
+  EXPECT_NEAR(on_it->at.x(), 0.25, 1e-9);
+  EXPECT_NEAR(on_it->at.y(), 1.0, 1e-9);
+  EXPECT_NEAR(on_it->image.x(), 0.5, 1e-9);
+  EXPECT_NEAR(on_it->image.y(), 0.0, 1e-9);
+  const std::optional<MirrorCrossing> past_its_end = crossingOf({3.0, 2.0});
+  ASSERT_TRUE(past_its_end.has_value()) << "the line goes on past the remembered stretch";
+  EXPECT_FALSE(past_its_end->within_segment);
+  EXPECT_NEAR(past_its_end->at.x(), 1.5, 1e-9);
+  EXPECT_FALSE(crossingOf({0.5, 0.5}).has_value()) << "in front of it";
+  EXPECT_FALSE(crossingOf({0.5, 1.1}).has_value()) << "on it, within the surface margin";
+  EXPECT_FALSE(crossingOf(kNoReturn).has_value());
+  // A line no frame confirmed is no mirror.
+  SurfaceMemory unconfirmed = memoryOfASparseLine(panesRememberedLonger());
+  EXPECT_FALSE(unconfirmed.anyMirrorBehind(kOrigin, {0.5, 2.0}, at(1.0), [](const MirrorCrossing&) { return true; }));
 }
 
 TEST(SurfaceMemory, AConfirmedPaneStaysOneWhenSeenAgainAsASparseLine) {
