@@ -7,8 +7,8 @@
 namespace scanfilter {
 
 bool MirrorGhostCheck::isGhost(const MirrorCrossing& crossing, const PenetrationGrid& grid) const {
-  if (!crossing.within_segment && !lineGoesOn(crossing, grid)) return false;
-  return imageOnObstacle(crossing.image, grid);
+  // The image first: its search is the smaller.
+  return imageOnObstacle(crossing.image, grid) && (crossing.within_segment || lineGoesOn(crossing, grid));
 }
 
 bool MirrorGhostCheck::lineGoesOn(const MirrorCrossing& crossing, const PenetrationGrid& grid) const {
