@@ -1,6 +1,9 @@
 // MirrorGhostCheck (Beyond the paper 35): a return beyond a mirror's line is
 // a ghost when its mirror image lies on an obstacle the cache holds, and,
-// past the remembered stretch, when the cache's returns continue the line.
+// past the remembered stretch, when the cache's returns continue the line
+// on both sides of the crossing and are no surface crossing it.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
@@ -29,7 +32,8 @@ TEST(MirrorGhostCheck, AGhostsImageLiesOnAnObstacleTheCacheHolds) {
   PenetrationGrid grid(kCell, kObstacleThreshold);
   addReturns(grid, {0.5, -1.5}, 3);  // the wall the reflected beam hit
   EXPECT_TRUE(check.isGhost(crossingAt(0.2, {0.52, -1.46}, true), grid));
-  EXPECT_FALSE(check.isGhost(crossingAt(0.2, {0.5, -1.7}, true), grid)) << "0.2 m off it: beyond image_radius";
+  // Searched (the cells within image_radius along each axis), but 0.099 m off it.
+  EXPECT_FALSE(check.isGhost(crossingAt(0.2, {0.43, -1.57}, true), grid)) << "beyond image_radius";
   PenetrationGrid too_few(kCell, kObstacleThreshold);
   addReturns(too_few, {0.5, -1.5}, 2);
   EXPECT_FALSE(check.isGhost(crossingAt(0.2, {0.5, -1.5}, true), too_few)) << "no obstacle: obs_th returns";
@@ -53,18 +57,39 @@ TEST(MirrorGhostCheck, PastTheRememberedStretchTheCachesReturnsMustContinueTheLi
   addReturns(mirror_goes_on, {2.08, -0.02}, 1);
   EXPECT_TRUE(check.isGhost(crossingAt(2.0, image, false), mirror_goes_on));
 
-  // A wall crossing the line at right angles holds returns at one place on it only.
-  PenetrationGrid wall_across = withObstacleAtImage();
-  for (double y = -0.3; y <= 0.3; y += 0.02) addReturns(wall_across, {2.01, y}, 3);
-  EXPECT_FALSE(check.isGhost(crossingAt(2.0, image, false), wall_across));
+  // Returns on one side of the crossing only: where the mirror ends.
+  PenetrationGrid one_side = withObstacleAtImage();
+  addReturns(one_side, {1.75, 0.0}, 1);
+  addReturns(one_side, {1.9, 0.0}, 1);
+  EXPECT_FALSE(check.isGhost(crossingAt(2.0, image, false), one_side));
 
-  // Returns along the line but too far from the crossing, or off the line.
+  // Returns along the line, but one beyond line_window (0.3 m) of the
+  // crossing, and others off the line by more than the crossing band.
   PenetrationGrid elsewhere = withObstacleAtImage();
-  addReturns(elsewhere, {2.4, 0.0}, 1);
-  addReturns(elsewhere, {2.6, 0.0}, 1);
-  addReturns(elsewhere, {1.9, 0.1}, 1);
-  addReturns(elsewhere, {2.1, -0.1}, 1);
+  addReturns(elsewhere, {1.8, 0.0}, 1);
+  addReturns(elsewhere, {2.32, 0.0}, 1);
+  addReturns(elsewhere, {2.1, -0.2}, 1);
   EXPECT_FALSE(check.isGhost(crossingAt(2.0, image, false), elsewhere));
+}
+
+// A wall through the crossing: on the line it holds returns at one place
+// (at right angles) or over a short stretch (at a shallow angle), with
+// returns of its own just off the line beside them.
+void addWallThrough(PenetrationGrid& grid, const Eigen::Vector2d& at, double angle_deg) {
+  const double a = angle_deg * 3.14159265358979 / 180.0;
+  const Eigen::Vector2d along(std::cos(a), std::sin(a));
+  for (double t = -0.5; t <= 0.5; t += 0.01) addReturns(grid, at + t * along, 3);
+}
+
+TEST(MirrorGhostCheck, AWallCrossingTheLineDoesNotContinueTheMirror) {
+  const MirrorGhostCheck check({});
+  const Eigen::Vector2d image{2.0, -1.5};
+  for (double angle : {90.0, 45.0, 20.0}) {
+    PenetrationGrid grid(kCell, kObstacleThreshold);
+    addReturns(grid, image, 3);
+    addWallThrough(grid, {2.0, 0.0}, angle);
+    EXPECT_FALSE(check.isGhost(crossingAt(2.0, image, false), grid)) << angle << "°";
+  }
 }
 
 TEST(MirrorGhostCheck, TheLinesSpreadIsAParameter) {
@@ -76,7 +101,7 @@ TEST(MirrorGhostCheck, TheLinesSpreadIsAParameter) {
   addReturns(grid, {1.93, 0.0}, 1);
   addReturns(grid, {2.08, 0.0}, 1);
   EXPECT_FALSE(check.isGhost(crossingAt(2.0, {2.0, -1.5}, false), grid)) << "0.15 m < 0.2 m";
-  addReturns(grid, {2.2, 0.0}, 1);
+  addReturns(grid, {2.2, 0.0}, 1);  // -0.07 to 0.2 now
   EXPECT_TRUE(check.isGhost(crossingAt(2.0, {2.0, -1.5}, false), grid));
 }
 

@@ -95,11 +95,14 @@ void readMirrorGhosts(const YamlSection& parent, MirrorGhostParams& g) {
   s.read("line_window", g.line_window);
   s.read("line_tolerance", g.line_tolerance);
   s.read("line_spread", g.line_spread);
+  s.read("crossing_band", g.crossing_band);
   s.requireRange("image_radius", g.image_radius, 1e-3, 1.0, "0.001 <= value <= 1 (m)");
   s.requireRange("line_window", g.line_window, 1e-3, 10.0, "0.001 <= value <= 10 (m)");
   s.requireRange("line_tolerance", g.line_tolerance, 0.0, 1.0, "0 <= value <= 1 (m)");
   s.requireRange("line_spread", g.line_spread, 0.0, 2.0 * g.line_window,
                  "0 <= value <= 2 x line_window (m: the returns lie within line_window either side)");
+  s.requireRange("crossing_band", g.crossing_band, g.line_tolerance, 1.0,
+                 "line_tolerance <= value <= 1 (m: beyond the line's own returns)");
   s.rejectUnknownKeys();
 }
 

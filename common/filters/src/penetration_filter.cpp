@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <unordered_map>
 
@@ -525,11 +526,13 @@ bool PenetrationFilter::obstacleBehindInFootprint(const Eigen::Vector2d& origin,
 
 void PenetrationFilter::markBeyondRememberedSurfaces(Stamp stamp, const Eigen::Vector2d& origin,
                                                      std::span<std::uint8_t> labels) const {
+  const std::function<bool(const MirrorCrossing&)> ghost = [&](const MirrorCrossing& crossing) {
+    return mirror_ghosts_.isGhost(crossing, grid_);
+  };
   for (std::size_t i = 0; i < labels.size(); ++i) {
     if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid)) continue;
-    const auto ghost = [&](const MirrorCrossing& crossing) { return mirror_ghosts_.isGhost(crossing, grid_); };
     if (memory_.liesBeyondASurface(origin, points_[i], stamp) ||
-        (mirror_ghosts_.enabled() && memory_.anyMirrorBehind(origin, points_[i], stamp, ghost)))
+        (mirror_ghosts_.enabled() && memory_.anyMirrorCrossed(origin, points_[i], stamp, ghost)))
       labels[i] = static_cast<std::uint8_t>(PointCode::kMisdetected);
   }
 }

@@ -32,7 +32,7 @@ double SurfaceMemory::lifetimeOf(const Segment& s) const {
 }
 
 void SurfaceMemory::forget(const Eigen::Vector2d& origin, Stamp now) {
-  drop([&](const Segment& s) { return now.secondsSince(s.last_seen) > lifetimeOf(s); });
+  drop([&](const Segment& s) { return !alive(s, now); });
   if (last_origin_) {
     const Eigen::Vector2d from = *last_origin_;
     drop([&](const Segment& s) {
@@ -89,6 +89,10 @@ double SurfaceMemory::surfaceMargin(double range) const {
   return params_.surface_margin + params_.surface_margin_per_m * range;
 }
 
+double SurfaceMemory::marginOf(const Segment& s, double range) const {
+  return surfaceMargin(range) + driftMargin(s, range);
+}
+
 double SurfaceMemory::driftMargin(const Segment& s, double range) const {
   // Odometry drifts with the path driven: the position by a share of it,
   // the heading by an angle per metre, which moves a return at `range` by
@@ -103,26 +107,22 @@ double SurfaceMemory::driftMargin(const Segment& s, double range) const {
 
 bool SurfaceMemory::liesBeyondASurface(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now) const {
   const double range = (p - origin).norm();
-  const double margin = surfaceMargin(range);
   const Eigen::Vector2d lo = origin.cwiseMin(p), hi = origin.cwiseMax(p);
   return std::any_of(segments_.begin(), segments_.end(), [&](const Segment& s) {
     const bool boxes_meet = (s.hi.array() >= lo.array()).all() && (s.lo.array() <= hi.array()).all();
-    return boxes_meet && now.secondsSince(s.last_seen) <= lifetimeOf(s) &&
-           beamPassesThrough(s, origin, p, margin + driftMargin(s, range));
+    return boxes_meet && alive(s, now) && beamPassesThrough(s, origin, p, marginOf(s, range));
   });
 }
 
-bool SurfaceMemory::anyMirrorBehind(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now,
-                                    const std::function<bool(const MirrorCrossing&)>& pred) const {
+bool SurfaceMemory::anyMirrorCrossed(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now,
+                                     const std::function<bool(const MirrorCrossing&)>& pred) const {
   const double range = (p - origin).norm();
-  const double margin = surfaceMargin(range);
   return std::any_of(segments_.begin(), segments_.end(), [&](const Segment& s) {
-    if (!s.pane_or_mirror || now.secondsSince(s.last_seen) > lifetimeOf(s)) return false;
+    if (!s.pane_or_mirror || !alive(s, now)) return false;
     const double beyond = s.normal.dot(p - s.a);
-    if (!(std::abs(beyond) >= margin + driftMargin(s, range))) return false;  // on the line (NaN too)
+    if (!(std::abs(beyond) >= marginOf(s, range))) return false;  // on the line (NaN too)
     const std::optional<double> along = s.crossingAlong(origin, p);  // nullopt: p on the sensor's side
-    return along && pred({s.a + s.unit * *along, s.unit, p - 2.0 * beyond * s.normal,
-                          *along >= 0.0 && *along <= s.length});
+    return along && pred({s.a + s.unit * *along, s.unit, p - 2.0 * beyond * s.normal, s.insideEnds(*along)});
   });
 }
 

@@ -1,29 +1,13 @@
 #pragma once
+#include <vector>
+
 #include <Eigen/Core>
 
+#include "scanfilter/mirror_crossing.hpp"
+#include "scanfilter/mirror_ghost_params.hpp"
 #include "scanfilter/penetration_grid.hpp"
 
 namespace scanfilter {
-
-// Parameters of the mirror-image test (config/filter.yaml, penetration_filter:
-// surface_memory: mirror_ghosts, documents each; docs/accuracy.md, Beyond the
-// paper 35).
-struct MirrorGhostParams {
-  bool enabled = true;
-  double image_radius = 0.08;    // m, the image lies this near an obstacle the cache holds
-  double line_window = 0.30;     // m, past a mirror's remembered ends: the cache's returns this near the crossing ...
-  double line_tolerance = 0.04;  // m, ... and this near the mirror's line ...
-  double line_spread = 0.10;     // m, ... spread this far along it show that the mirror goes on there
-};
-
-// Where the beam to a return crossed the line of a remembered pane or
-// mirror, the return lying beyond that line (SurfaceMemory::anyMirrorBehind).
-struct MirrorCrossing {
-  Eigen::Vector2d at;      // the crossing, on the line
-  Eigen::Vector2d unit;    // the line's direction
-  Eigen::Vector2d image;   // the return mirrored across the line
-  bool within_segment;     // the crossing lies on the remembered stretch
-};
 
 // Beyond the paper 35: a ghost is the mirror image of a real surface. A
 // beam that meets a mirror goes on, reflected, to a surface on the sensor's
@@ -35,11 +19,13 @@ struct MirrorCrossing {
 // The test reaches past the stretch of the mirror the memory holds: a
 // mirror returns the beam only near normal incidence, so most of it is
 // never seen, while its ghosts are. It goes on where the cache holds
-// returns along its line (a glossy surface's occasional diffuse returns, a
-// pane's): returns spread along the line, not a wall that crosses it,
-// which holds returns at one place only. Without that, the image of a wall
-// that meets the line at right angles is that wall itself, and the rooms
-// of a building mirror each other across their walls.
+// returns along its line on both sides of the crossing (a glossy surface's
+// occasional diffuse returns, a pane's), and not where those returns are a
+// surface that crosses the line: one with returns just off the line beside
+// them (crossing_band), a wall, or a box's face ending beside a wall.
+// Without that, the image of a wall that meets the line at right angles is
+// that wall itself, and the rooms of a building mirror each other across
+// their walls.
 class MirrorGhostCheck {
  public:
   explicit MirrorGhostCheck(const MirrorGhostParams& params) : params_(params) {}
@@ -52,9 +38,17 @@ class MirrorGhostCheck {
 
  private:
   bool lineGoesOn(const MirrorCrossing& crossing, const PenetrationGrid& grid) const;
+  // The cached returns within line_window of the crossing along the line:
+  // how far along it each lies, split by how far off it.
+  struct ReturnsNearLine {
+    std::vector<double> on_line;      // within line_tolerance
+    std::vector<double> beside_line;  // farther, within crossing_band
+  };
+  ReturnsNearLine returnsNearLine(const MirrorCrossing& crossing, const PenetrationGrid& grid) const;
   bool imageOnObstacle(const Eigen::Vector2d& image, const PenetrationGrid& grid) const;
 
   MirrorGhostParams params_;
+  static constexpr int kAnyReturn = 1;  // a cell holding this many returns or more is searched
 };
 
 }  // namespace scanfilter

@@ -8,7 +8,8 @@
 #include <Eigen/Core>
 
 #include "scanfilter/beam_mask.hpp"
-#include "scanfilter/mirror_ghost_check.hpp"
+#include "scanfilter/mirror_crossing.hpp"
+#include "scanfilter/mirror_ghost_params.hpp"
 #include "scanfilter/sparse_surfaces.hpp"
 #include "scanfilter/stamp.hpp"
 #include "scanfilter/straight_segments.hpp"
@@ -87,17 +88,20 @@ class SurfaceMemory {
   // line of a confirmed pane or mirror (one seen within its lifetime), on
   // the remembered stretch or anywhere past it, p lying beyond that line by
   // more than the surface margin (driftMargin's too). Stops at the first.
-  bool anyMirrorBehind(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now,
+  // The crossing counts as on the stretch only inside its end margins, as
+  // for liesBeyondASurface.
+  bool anyMirrorCrossed(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now,
                        const std::function<bool(const MirrorCrossing&)>& pred) const;
   // Confirms the sparse segments (rememberSegments) this frame faces as
   // panes or mirrors: it sees returns on them within the specular lobe
   // (head_on_deg of the foot of its perpendicular, + specular_confirm_distance),
   // and outside the lobe at least specular_min_pass_share of the beams that
   // meet them pass through (2 or more: a segment lying wholly in the lobe
-  // confirms nothing), where a row of chair legs returns most of them. A
-  // glossy surface returns some beams at any angle (Beyond the paper 35). A confirmed one is remembered
-  // specular_lifetime, and stays confirmed: what merges with it on its line
-  // is that surface (docs/accuracy.md, Beyond the paper 34).
+  // confirms nothing), where a row of chair legs returns most of them; a
+  // glossy surface returns some at any angle (Beyond the paper 35). A
+  // confirmed one is remembered specular_lifetime, and stays confirmed:
+  // what merges with it on its line is that surface (docs/accuracy.md,
+  // Beyond the paper 34).
   // `returns`: every beam with a return. A no-op with the rule off.
   void confirmPanesAndMirrors(std::span<const Eigen::Vector2d> points, const BeamMask& returns,
                               const Eigen::Vector2d& origin);
@@ -169,6 +173,10 @@ class SurfaceMemory {
   // driven since it was seen (0 for any other segment).
   double driftMargin(const Segment& s, double range) const;
   double lifetimeOf(const Segment& s) const;
+  // Seen within its lifetime.
+  bool alive(const Segment& s, Stamp now) const { return now.secondsSince(s.last_seen) <= lifetimeOf(s); }
+  // The margin a return at `range` must lie off the segment's line by to lie beyond it.
+  double marginOf(const Segment& s, double range) const;
   bool confirmedHeadOn(const Segment& s, std::span<const Eigen::Vector2d> points, const BeamMask& returns,
                        const Eigen::Vector2d& origin) const;
   bool seenThroughHeadOn(const Segment& s, std::span<const Eigen::Vector2d> points, const BeamMask& returns,

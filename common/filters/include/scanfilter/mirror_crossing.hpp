@@ -1,0 +1,15 @@
+#pragma once
+#include <Eigen/Core>
+
+namespace scanfilter {
+
+// Where the beam to a return crossed the line of a remembered pane or
+// mirror, the return lying beyond that line (SurfaceMemory::anyMirrorCrossed).
+struct MirrorCrossing {
+  Eigen::Vector2d at;      // the crossing, on the line
+  Eigen::Vector2d unit;    // the line's direction
+  Eigen::Vector2d image;   // the return mirrored across the line
+  bool within_segment;     // the crossing lies on the remembered stretch, inside its end margins
+};
+
+}  // namespace scanfilter
