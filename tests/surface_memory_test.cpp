@@ -567,13 +567,14 @@ TEST(SurfaceMemory, OnlySparseLinesAreConfirmedAndNeverLiveShorterThanTheLifetim
 }
 
 TEST(SurfaceMemory, AReturnBeyondAMirrorsLineIsMirroredAcrossIt) {
+  constexpr double kMinDepth = 0.16;  // MirrorGhostCheck's: twice its image_radius
   // Beyond the paper 35: the mirror at y = 1, x from -1 to 1, confirmed.
   SurfaceMemory memory = memoryOfASparseLine(panesRememberedLonger());
   const auto head_on = aFrameFacing({0.0});
   memory.confirmPanesAndMirrors(head_on, usableReturns(head_on), kOrigin);
   const auto crossingOf = [&](const Eigen::Vector2d& p) {
     std::optional<MirrorCrossing> found;
-    memory.anyMirrorCrossed(kOrigin, p, at(1.0), [&](const MirrorCrossing& c) {
+    memory.anyMirrorCrossed(kOrigin, p, at(1.0), kMinDepth, [&](const MirrorCrossing& c) {
       found = c;
       return true;
     });
@@ -594,13 +595,16 @@ TEST(SurfaceMemory, AReturnBeyondAMirrorsLineIsMirroredAcrossIt) {
   ASSERT_TRUE(in_the_end_margin.has_value());
   EXPECT_FALSE(in_the_end_margin->within_segment) << "0.05 m inside its end: within end_margin";
   EXPECT_FALSE(crossingOf({0.5, 0.5}).has_value()) << "in front of it";
-  EXPECT_FALSE(crossingOf({0.5, 1.1}).has_value()) << "on it, within the surface margin";
+  EXPECT_FALSE(crossingOf({0.5, 1.1}).has_value()) << "0.1 m beyond it: nearer than min_depth";
+  EXPECT_TRUE(crossingOf({0.6, 1.2}).has_value()) << "0.2 m beyond it, inside the surface margin (0.22 m)";
   EXPECT_FALSE(crossingOf(kNoReturn).has_value());
-  EXPECT_FALSE(memory.anyMirrorCrossed({0.0, 2.0}, kNoReturn, at(1.0), [](const MirrorCrossing&) { return true; }))
+  EXPECT_FALSE(
+      memory.anyMirrorCrossed({0.0, 2.0}, kNoReturn, at(1.0), kMinDepth, [](const MirrorCrossing&) { return true; }))
       << "no return, seen from the line's other side";
   // A line no frame confirmed is no mirror.
   SurfaceMemory unconfirmed = memoryOfASparseLine(panesRememberedLonger());
-  EXPECT_FALSE(unconfirmed.anyMirrorCrossed(kOrigin, {0.5, 2.0}, at(1.0), [](const MirrorCrossing&) { return true; }));
+  EXPECT_FALSE(unconfirmed.anyMirrorCrossed(kOrigin, {0.5, 2.0}, at(1.0), kMinDepth,
+                                            [](const MirrorCrossing&) { return true; }));
 }
 
 TEST(SurfaceMemory, AConfirmedPaneStaysOneWhenSeenAgainAsASparseLine) {

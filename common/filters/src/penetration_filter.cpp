@@ -532,7 +532,7 @@ void PenetrationFilter::markBeyondRememberedSurfaces(Stamp stamp, const Eigen::V
   for (std::size_t i = 0; i < labels.size(); ++i) {
     if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid)) continue;
     if (memory_.liesBeyondASurface(origin, points_[i], stamp) ||
-        (mirror_ghosts_.enabled() && memory_.anyMirrorCrossed(origin, points_[i], stamp, ghost)))
+        (mirror_ghosts_.enabled() && memory_.anyMirrorCrossed(origin, points_[i], stamp, mirror_ghosts_.minDepthBeyondLine(), ghost)))
       labels[i] = static_cast<std::uint8_t>(PointCode::kMisdetected);
   }
 }

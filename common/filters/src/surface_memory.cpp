@@ -115,12 +115,12 @@ bool SurfaceMemory::liesBeyondASurface(const Eigen::Vector2d& origin, const Eige
 }
 
 bool SurfaceMemory::anyMirrorCrossed(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now,
-                                     const std::function<bool(const MirrorCrossing&)>& pred) const {
+                                     double min_depth, const std::function<bool(const MirrorCrossing&)>& pred) const {
   const double range = (p - origin).norm();
   return std::any_of(segments_.begin(), segments_.end(), [&](const Segment& s) {
     if (!s.pane_or_mirror || !alive(s, now)) return false;
     const double beyond = s.normal.dot(p - s.a);
-    if (!(std::abs(beyond) >= marginOf(s, range))) return false;  // on the line (NaN too)
+    if (!(std::abs(beyond) >= min_depth + driftMargin(s, range))) return false;  // on the line (NaN too)
     const std::optional<double> along = s.crossingAlong(origin, p);  // nullopt: p on the sensor's side
     return along && pred({s.a + s.unit * *along, s.unit, p - 2.0 * beyond * s.normal, s.insideEnds(*along)});
   });

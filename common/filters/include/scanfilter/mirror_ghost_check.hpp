@@ -31,6 +31,11 @@ class MirrorGhostCheck {
   explicit MirrorGhostCheck(const MirrorGhostParams& params) : params_(params) {}
 
   bool enabled() const { return params_.enabled; }
+  // How far beyond the mirror's line a return must lie to be tested:
+  // nearer, its image (as near on the other side) could fall within
+  // image_radius of the mirror's own returns, which scatter about its line
+  // (noise), or of the return's own surface seen just beyond the line.
+  double minDepthBeyondLine() const { return 2.0 * params_.image_radius; }
   // Whether the return whose beam crossed a mirror so is a ghost: the
   // mirror is there (the remembered stretch, or a line the cache's returns
   // continue it along) and the image lies on an obstacle of `grid`.

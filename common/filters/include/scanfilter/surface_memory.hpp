@@ -87,11 +87,13 @@ class SurfaceMemory {
   // Whether pred holds for a crossing of the beam from origin to p with the
   // line of a confirmed pane or mirror (one seen within its lifetime), on
   // the remembered stretch or anywhere past it, p lying beyond that line by
-  // more than the surface margin (driftMargin's too). Stops at the first.
-  // The crossing counts as on the stretch only inside its end margins, as
-  // for liesBeyondASurface.
-  bool anyMirrorCrossed(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now,
-                       const std::function<bool(const MirrorCrossing&)>& pred) const;
+  // min_depth or more, plus the pane's drift margin (driftMargin: where an
+  // old one may have moved). Not the surface margin: the caller's test of
+  // the return's image brings its own tolerance. Stops at the first. The
+  // crossing counts as on the stretch only inside its end margins, as for
+  // liesBeyondASurface.
+  bool anyMirrorCrossed(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now, double min_depth,
+                        const std::function<bool(const MirrorCrossing&)>& pred) const;
   // Confirms the sparse segments (rememberSegments) this frame faces as
   // panes or mirrors: it sees returns on them within the specular lobe
   // (head_on_deg of the foot of its perpendicular, + specular_confirm_distance),
