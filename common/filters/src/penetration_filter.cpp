@@ -529,10 +529,13 @@ void PenetrationFilter::markBeyondRememberedSurfaces(Stamp stamp, const Eigen::V
   const std::function<bool(const MirrorCrossing&)> ghost = [&](const MirrorCrossing& crossing) {
     return mirror_ghosts_.isGhost(crossing, grid_);
   };
+  const auto isMirrorGhost = [&](const Eigen::Vector2d& p) {
+    return mirror_ghosts_.enabled() &&
+           memory_.anyMirrorCrossed(origin, p, stamp, mirror_ghosts_.minDepthBeyondLine(), ghost);
+  };
   for (std::size_t i = 0; i < labels.size(); ++i) {
     if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid)) continue;
-    if (memory_.liesBeyondASurface(origin, points_[i], stamp) ||
-        (mirror_ghosts_.enabled() && memory_.anyMirrorCrossed(origin, points_[i], stamp, mirror_ghosts_.minDepthBeyondLine(), ghost)))
+    if (memory_.liesBeyondASurface(origin, points_[i], stamp) || isMirrorGhost(points_[i]))
       labels[i] = static_cast<std::uint8_t>(PointCode::kMisdetected);
   }
 }
