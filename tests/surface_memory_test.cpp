@@ -596,7 +596,7 @@ TEST(SurfaceMemory, AReturnBeyondAMirrorsLineIsMirroredAcrossIt) {
   EXPECT_FALSE(in_the_end_margin->within_segment) << "0.05 m inside its end: within end_margin";
   EXPECT_FALSE(crossingOf({0.5, 0.5}).has_value()) << "in front of it";
   EXPECT_FALSE(crossingOf({0.5, 1.1}).has_value()) << "0.1 m beyond it: nearer than min_depth";
-  EXPECT_TRUE(crossingOf({0.6, 1.2}).has_value()) << "0.2 m beyond it, inside the surface margin (0.22 m)";
+  EXPECT_TRUE(crossingOf({0.6, 1.2}).has_value()) << "0.2 m beyond it, inside the surface margin (0.23 m)";
   EXPECT_FALSE(crossingOf(kNoReturn).has_value());
   EXPECT_FALSE(
       memory.anyMirrorCrossed({0.0, 2.0}, kNoReturn, at(1.0), kMinDepth, [](const MirrorCrossing&) { return true; }))

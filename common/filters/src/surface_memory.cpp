@@ -142,7 +142,7 @@ bool SurfaceMemory::seenThroughHeadOn(const Segment& s, std::span<const Eigen::V
     const double length = beam.norm();
     if (!(length > 0.0) || std::abs(s.unit.dot(beam)) > max_along * length) continue;  // not head-on
     // As when judging: a drifted pane's own head-on returns lie on it.
-    const double margin = surfaceMargin(length) + driftMargin(s, length);
+    const double margin = marginOf(s, length);
     if (std::abs(s.normal.dot(p - s.a)) < margin) {
       const double along_line = s.unit.dot(p - s.a);
       if (along_line > 0.0 && along_line < s.length) return false;  // a return on it: it is still there

@@ -36,7 +36,9 @@ struct SurfaceMemoryParams {
   double specular_min_pass_share = 0.5;     // of the beams meeting it off the lobe, the share that must pass
   double drift_margin_per_m = 0.01;         // m of a pane's surface margin per m driven since it was seen
   double drift_margin_deg_per_m = 0.5;      // ... and this heading drift per m driven, times the return's range
-  // Ghosts found as mirror images of what the cache holds (Beyond the paper 35).
+  // Ghosts found as mirror images of what the cache holds (Beyond the paper
+  // 35): configured here, beside the panes and mirrors it needs; read by
+  // the penetration filter's MirrorGhostCheck.
   MirrorGhostParams mirror_ghosts;
   StraightSegmentParams segments;
   // Surfaces the cache holds a return at a time, found by the penetration
