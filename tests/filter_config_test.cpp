@@ -55,6 +55,7 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(s.penetration.evidence_noise_sampling.min_samples, d.penetration.evidence_noise_sampling.min_samples);
   EXPECT_EQ(s.penetration.edge_vote_margin_deg, d.penetration.edge_vote_margin_deg);
   EXPECT_EQ(s.penetration.edge_depth_step, d.penetration.edge_depth_step);
+  EXPECT_EQ(s.penetration.rescue_min_parallax_deg, d.penetration.rescue_min_parallax_deg);
   EXPECT_EQ(s.penetration.free_space_check, d.penetration.free_space_check);
   EXPECT_EQ(s.penetration.free_space_margin, d.penetration.free_space_margin);
   EXPECT_EQ(s.penetration.free_space_dip, d.penetration.free_space_dip);
@@ -158,6 +159,11 @@ TEST(FilterConfig, ReadsTheMirrorGhostKeys) {
   EXPECT_EQ(m.mirror_ghosts.line_window, 0.4);
   EXPECT_EQ(m.mirror_ghosts.line_tolerance, 0.03);
   EXPECT_EQ(m.mirror_ghosts.line_spread, 0.2);
+}
+
+TEST(FilterConfig, ReadsTheRescueParallax) {
+  const FilterConfig c = parseFilterConfig("penetration_filter:\n  rescue_min_parallax_deg: 12.5\n", "f.yaml");
+  EXPECT_EQ(c.params.penetration.rescue_min_parallax_deg, 12.5);
 }
 
 TEST(FilterConfig, AutoValuesComeFromTheSensor) {
@@ -265,6 +271,8 @@ TEST(FilterConfigErrors, NameFileLineAndKey) {
             "line_window (m: the returns lie within line_window either side)");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    mirror_ghosts:\n      image_radius: 0\n"),
             "f.yaml:4: penetration_filter.surface_memory.mirror_ghosts.image_radius: expected 0.001 <= value <= 1 (m)");
+  EXPECT_EQ(errorOf("penetration_filter:\n  rescue_min_parallax_deg: 90\n"),
+            "f.yaml:2: penetration_filter.rescue_min_parallax_deg: expected 0 <= value <= 89 (degrees; 0: off)");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    mirror_ghosts:\n      radius: 0.1\n"),
             "f.yaml:4: penetration_filter.surface_memory.mirror_ghosts.radius: unknown key");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    head_on_through_beams: -1\n"),

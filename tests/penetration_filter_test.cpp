@@ -625,6 +625,54 @@ TEST(PenetrationFilter, RescueWithABaselineNeedsEvidenceFromElsewhere) {
   EXPECT_EQ(legLabelAfter(p, 0.05, 16, 11), kValid);
 }
 
+// A return 1 m ahead: the sensor first slides sideways 5 cm a frame at
+// y 0.4 -> 0.05 (looking at the spot 17-2° off the later beam), then backs
+// away along the line through it, the beam staying on the spot as it does on
+// a mixed return, and step 1 calling it jump. The first `seen_from_aside`
+// sideways frames hold the spot too, kept, as step 1 keeps a leg standing in
+// front of both sides; with 0 only the frames along the line hold it, as
+// they do a mixed return. Its label in the last frame, the same from both
+// implementations.
+std::uint8_t spotLabelAfterFramesAlongItsBeam(const PenetrationFilterParams& p, int seen_from_aside) {
+  const SensorInfo sensor = test::simpleSensor();
+  BothFilters filters(p);
+  const Eigen::Vector2d spot(1.0, 0.0);
+  constexpr int kAside = 8, kAlong = 16;
+  std::vector<std::uint8_t> labels;
+  std::size_t beam = 0;
+  for (int k = 0; k < kAside + kAlong; ++k) {
+    const bool along = k >= kAside;
+    const Eigen::Vector2d at = along ? Eigen::Vector2d(-0.3 - 0.05 * (k - kAside), 0.0)
+                                     : Eigen::Vector2d(-0.3, 0.4 - 0.05 * k);
+    Scan scan = castScan(kRoom, {at.x(), at.y(), 0.0}, sensor, 360, 0.1 * k);
+    const Eigen::Vector2d to_spot = spot - at;
+    beam = test::beamTowards(scan, sensor, std::atan2(to_spot.y(), to_spot.x()));
+    if (along || k < seen_from_aside) scan.ranges[beam] = to_spot.norm();
+    labels.assign(scan.size(), kValid);
+    for (std::size_t i = 0; i < scan.size(); ++i)
+      if (!scan.hasReturn(i)) labels[i] = static_cast<std::uint8_t>(PointCode::kNoReturn);
+    if (along) labels[beam] = static_cast<std::uint8_t>(PointCode::kJump);  // as step 1 says
+    labels = filters.apply(scan, sensor, labels);
+  }
+  return labels[beam];
+}
+
+TEST(PenetrationFilter, RescueNeedsTheReturnSeenFromAsideWhenAFrameLookedFromAside) {
+  constexpr auto kJump = static_cast<std::uint8_t>(PointCode::kJump);
+  PenetrationFilterParams p;
+  ASSERT_EQ(p.rescue_min_parallax_deg, 5.0);
+  ASSERT_TRUE(p.free_space_check) << "the sideways frames' ranges are cached with the free-space check";
+  EXPECT_EQ(spotLabelAfterFramesAlongItsBeam(p, 8), kValid) << "a leg: the sideways frames ended at it";
+  EXPECT_EQ(spotLabelAfterFramesAlongItsBeam(p, 2), kValid)
+      << "a leg hidden from most sideways frames: two ended at it, the others looked through";
+  EXPECT_EQ(spotLabelAfterFramesAlongItsBeam(p, 0), kJump)
+      << "a mixed return: the sideways frames looked through it to the wall";
+  p.rescue_min_parallax_deg = 0.0;
+  EXPECT_EQ(spotLabelAfterFramesAlongItsBeam(p, 0), kValid) << "off: the frames along the line vouch for it";
+  p.rescue_min_parallax_deg = 20.0;  // more than the sideways frames' 17°
+  EXPECT_EQ(spotLabelAfterFramesAlongItsBeam(p, 0), kValid) << "no frame looked from that far aside";
+}
+
 // With the baseline, frames join the evidence late, or never: each return
 // must still leave it exactly once (a missed or a second removal leaves a
 // tile behind, its count wrapped).

@@ -230,6 +230,7 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.read("evidence_noise_window_scans", p.evidence_noise_sampling.window_scans);
   s.read("evidence_radius_max", p.evidence_radius_max);
   s.read("rescue_min_baseline", p.rescue_min_baseline);
+  s.read("rescue_min_parallax_deg", p.rescue_min_parallax_deg);
   s.read("free_space_check", p.free_space_check);
   s.read("free_space_margin", p.free_space_margin);
   s.read("free_space_margin_per_m", p.free_space_margin_per_m);
@@ -268,6 +269,8 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   // larger rescue_radius alone stays a valid config.
   s.requireRange("evidence_radius_max", p.evidence_radius_max, 0.0, 10.0, "0 <= value <= 10 (m)");
   s.requireRange("rescue_min_baseline", p.rescue_min_baseline, 0.0, 100.0, "0 <= value <= 100 (m; 0: off)");
+  s.requireRange("rescue_min_parallax_deg", p.rescue_min_parallax_deg, 0.0, 89.0,
+                 "0 <= value <= 89 (degrees; 0: off)");
   s.requireRange("edge_vote_margin_deg", p.edge_vote_margin_deg, 0.0, 45.0, "0 <= value <= 45 (degrees; 0: off)");
   s.requireRange("edge_depth_step", p.edge_depth_step, 0.0, 10.0, "0 <= value <= 10 (m)");
   s.requireRange("edge_smear_radius", p.edge_smear_radius, 0.0, 1.0, "0 <= value <= 1 (m; 0: off)");

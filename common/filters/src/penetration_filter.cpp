@@ -420,9 +420,27 @@ void PenetrationFilter::rescuePersistentPoints(const Eigen::Vector2d& origin, st
   // The evidence holds only earlier frames, so a point cannot vouch for itself.
   for (std::size_t i = 0; i < labels.size(); ++i) {
     if (labels[i] != static_cast<std::uint8_t>(PointCode::kJump)) continue;
-    if (evidenceAround(points_[i], origin) >= params_.rescue_min_count)
+    if (evidenceAround(points_[i], origin) >= params_.rescue_min_count && hitFromAside(points_[i], origin))
       labels[i] = static_cast<std::uint8_t>(PointCode::kValid);
   }
+}
+
+bool PenetrationFilter::hitFromAside(const Eigen::Vector2d& p, const Eigen::Vector2d& origin) const {
+  if (params_.rescue_min_parallax_deg <= 0.0) return true;
+  const double min_sine = std::sin(degreesToRadians(params_.rescue_min_parallax_deg));
+  const Eigen::Vector2d beam = (p - origin).normalized();
+  bool looked = false;
+  for (const CachedFrame& frame : cache_) {
+    if (!frame.image) continue;  // cached without its ranges (free_space_check off)
+    const Eigen::Vector2d other = (p - frame.image->origin()).normalized();
+    if (std::abs(cross(beam, other)) < min_sine) continue;  // along the beam: no parallax
+    const FreeSpaceCheck::Sighting sighting = free_space_.sighting(*frame.image, p);
+    if (sighting == FreeSpaceCheck::Sighting::kHit) return true;
+    looked = looked || sighting == FreeSpaceCheck::Sighting::kThrough;
+  }
+  // Nobody looked from aside (the robot drove straight at it, or has just
+  // started): the evidence alone decides, as before.
+  return !looked;
 }
 
 void PenetrationFilter::markSeenThrough(const Scan& scan, const Eigen::Vector2d& origin,

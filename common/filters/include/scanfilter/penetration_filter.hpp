@@ -163,6 +163,9 @@ class PenetrationFilter {
   // Whether the cache holds no obstacle where the surface through `inside`
   // and `end` would run on past the fringe's reach.
   bool cacheEndsToo(const Eigen::Vector2d& end, const Eigen::Vector2d& inside) const;
+  // rescue_min_parallax_deg: a cached frame looking at p from aside ended at
+  // it, or none looked from aside at all.
+  bool hitFromAside(const Eigen::Vector2d& p, const Eigen::Vector2d& origin) const;
   void rescuePersistentPoints(const Eigen::Vector2d& origin, std::span<std::uint8_t> labels);
   // Returns of `grid` whose cells' means lie within the evidence radius of
   // p, seen from the sensor at `origin` (rescue_radius, or more for a noisy

@@ -121,6 +121,16 @@ struct PenetrationFilterParams {
   // frame that joined stays until it expires, also when the robot comes
   // back to where it was taken. 0: every cached frame counts at once.
   double rescue_min_baseline = 0.25;  // m
+  // Beyond the paper 36: a mixed return stays put while the sensor moves
+  // along its beam (the edge and the background it mixes come nearer
+  // together), so frames taken along that line vouch for it as a surface;
+  // seen from aside it lands elsewhere. So the rescue also needs one cached
+  // frame whose beam towards the point meets the current beam at this angle
+  // or more to have ended at it (free_space_check.hpp's hit), whenever such
+  // a frame looked that way at all (one that saw nothing there, or only the
+  // fringe of an edge, does not count). Frames are cached with their ranges
+  // only with free_space_check on; without them this test passes. 0: off.
+  double rescue_min_parallax_deg = 5.0;  // degrees
   // Beyond the paper (free_space_check.hpp): a kept return beside a depth
   // edge becomes a jump point when cached frames taken from at least
   // rescue_min_baseline away looked through where it lies (the four beams
