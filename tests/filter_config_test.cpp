@@ -64,6 +64,7 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(s.penetration.thin_object_check, d.penetration.thin_object_check);
   EXPECT_EQ(s.penetration.thin_object_max_beams, d.penetration.thin_object_max_beams);
   EXPECT_EQ(s.penetration.thin_object_radius, d.penetration.thin_object_radius);
+  EXPECT_EQ(s.penetration.thin_object_depth_step, d.penetration.thin_object_depth_step);
   EXPECT_EQ(s.penetration.thin_object_min_returns, d.penetration.thin_object_min_returns);
   EXPECT_EQ(s.penetration.thin_object_beside_no_return, d.penetration.thin_object_beside_no_return);
   EXPECT_EQ(s.penetration.thin_object_evidence_kept, d.penetration.thin_object_evidence_kept);
@@ -159,6 +160,12 @@ TEST(FilterConfig, ReadsTheMirrorGhostKeys) {
   EXPECT_EQ(m.mirror_ghosts.line_window, 0.4);
   EXPECT_EQ(m.mirror_ghosts.line_tolerance, 0.03);
   EXPECT_EQ(m.mirror_ghosts.line_spread, 0.2);
+}
+
+TEST(FilterConfig, ReadsTheThinObjectDepthStep) {
+  const FilterConfig c = parseFilterConfig("penetration_filter:\n  thin_object_depth_step: 0.2\n", "f.yaml");
+  EXPECT_EQ(c.params.penetration.thin_object_depth_step, 0.2);
+  EXPECT_EQ(c.params.penetration.edge_depth_step, PenetrationFilterParams{}.edge_depth_step) << "its own key";
 }
 
 TEST(FilterConfig, ReadsTheRescueParallax) {
@@ -312,10 +319,14 @@ TEST(FilterConfigErrors, NameFileLineAndKey) {
             "require_surface_extent: false for cell centres)");
   EXPECT_EQ(errorOf("penetration_filter:\n  obstacle_at_centroid: false\n  require_surface_extent: false\n"), "no error");
   EXPECT_EQ(errorOf("penetration_filter:\n  obstacle_at_centroid: false\n  require_both_sides: false\n"), "no error");
-  EXPECT_EQ(errorOf("penetration_filter:\n  edge_depth_step: 0\n"),
-            "f.yaml:2: penetration_filter.edge_depth_step: must be > 0 with thin_object_check (or set "
+  EXPECT_EQ(errorOf("penetration_filter:\n  thin_object_depth_step: 0\n"),
+            "f.yaml:2: penetration_filter.thin_object_depth_step: must be > 0 with thin_object_check (or set "
             "thin_object_check: false)");
-  EXPECT_EQ(errorOf("penetration_filter:\n  edge_depth_step: 0\n  thin_object_check: false\n"), "no error");
+  EXPECT_EQ(errorOf("penetration_filter:\n  thin_object_depth_step: 0\n  thin_object_check: false\n"), "no error");
+  EXPECT_EQ(errorOf("penetration_filter:\n  thin_object_depth_step: 11\n"),
+            "f.yaml:2: penetration_filter.thin_object_depth_step: expected 0 <= value <= 10 (m)");
+  EXPECT_EQ(errorOf("penetration_filter:\n  edge_depth_step: 0\n"), "no error")
+      << "the thin-object check no longer uses it";
   EXPECT_EQ(errorOf("penetration_filter:\n  cache_min_interval: -0.1\n"),
             "f.yaml:2: penetration_filter.cache_min_interval: expected 0 <= value <= 10 (s; 0: every frame)");
   EXPECT_EQ(errorOf("penetration_filter:\n  free_space_margin_per_m: -0.01\n"),

@@ -23,7 +23,7 @@ using test::World;
 constexpr auto kValid = static_cast<std::uint8_t>(PointCode::kValid);
 constexpr auto kJump = static_cast<std::uint8_t>(PointCode::kJump);
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kStep = 0.15;  // the depth step, edge_depth_step's default
+constexpr double kStep = 0.15;  // the depth step of the geometric tests (any value > 0 would do)
 
 Scan scanOf(std::vector<double> ranges) {
   Scan scan;
@@ -254,6 +254,16 @@ TEST(ThinObjectCheck, StepTwoRemovesTheMixedReturnBehindALeg) {
   EXPECT_EQ(legBeamLabel(p, {.beyond_leg = 0.0}), kValid)
       << "the leg's own return: its cached cell is no object in front of it";
   EXPECT_EQ(legBeamLabel(p, {.beyond_leg = 0.1}), kValid) << "10 cm: within the depth step";
+
+  // Beyond the paper 37: the check's own step, 12 cm (edge_depth_step's
+  // 15 cm until then): a mix 14 cm behind the leg is found, not with 15 cm.
+  ASSERT_EQ(p.thin_object_depth_step, 0.12);
+  EXPECT_EQ(legBeamLabel(p, {.beyond_leg = 0.14}), kJump) << "14 cm: beyond the 12 cm step";
+  PenetrationFilterParams wider = p;
+  wider.thin_object_depth_step = 0.15;
+  EXPECT_EQ(legBeamLabel(wider, {.beyond_leg = 0.14}), kValid) << "14 cm: within a 15 cm step";
+  wider.edge_depth_step = 0.05;
+  EXPECT_EQ(legBeamLabel(wider, {.beyond_leg = 0.14}), kValid) << "edge_depth_step is not the check's step";
 
   PenetrationFilterParams off = p;
   off.thin_object_check = false;

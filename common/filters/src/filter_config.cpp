@@ -240,6 +240,7 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.read("thin_object_check", p.thin_object_check);
   s.read("thin_object_max_beams", p.thin_object_max_beams);
   s.read("thin_object_radius", p.thin_object_radius);
+  s.read("thin_object_depth_step", p.thin_object_depth_step);
   s.read("thin_object_min_returns", p.thin_object_min_returns);
   s.read("thin_object_beside_no_return", p.thin_object_beside_no_return);
   s.read("thin_object_evidence_kept", p.thin_object_evidence_kept);
@@ -286,8 +287,9 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.requireRange("thin_object_min_returns", p.thin_object_min_returns, 1, 1e9, "an integer >= 1");
   s.requireRange("thin_object_radius", p.thin_object_radius, 0.0, 1.0, "0 <= value <= 1 (m)");
   // With no depth step every local minimum would stand in front, and a return's own cell in front of it.
-  if (p.thin_object_check && !(p.edge_depth_step > 0.0))
-    s.fail("edge_depth_step", "must be > 0 with thin_object_check (or set thin_object_check: false)");
+  s.requireRange("thin_object_depth_step", p.thin_object_depth_step, 0.0, 10.0, "0 <= value <= 10 (m)");
+  if (p.thin_object_check && !(p.thin_object_depth_step > 0.0))
+    s.fail("thin_object_depth_step", "must be > 0 with thin_object_check (or set thin_object_check: false)");
   // Cell centres of a slanted wall one cell thick form a staircase: the next
   // centre past two neighbours across a beam is never on their line, so every
   // crossing of such a wall would be refused.

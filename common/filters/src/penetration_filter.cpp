@@ -45,7 +45,7 @@ PenetrationFilter::PenetrationFilter(const PenetrationFilterParams& params)
       evidence_(params.cell_size),  // the same cells as grid_: a frame's runs go into both
       aligner_(params.alignment),
       free_space_(params),
-      thin_objects_(params.edge_depth_step, params.thin_object_radius),
+      thin_objects_(params.thin_object_depth_step, params.thin_object_radius),
       memory_(params.surface_memory),
       mirror_ghosts_(params.surface_memory.mirror_ghosts),
       // Every count it sizes is the rescue's evidence: without the rescue
@@ -470,7 +470,7 @@ void PenetrationFilter::markSeenThrough(const Scan& scan, const Eigen::Vector2d&
 void PenetrationFilter::markMixedReturnsOfThinObjects(const Scan& scan, const Eigen::Vector2d& origin,
                                                       double range_max, std::span<std::uint8_t> labels) const {
   const std::vector<StandsInFront> stands = standingInFront(
-      scan, static_cast<std::size_t>(std::max(0, params_.thin_object_max_beams)), params_.edge_depth_step);
+      scan, static_cast<std::size_t>(std::max(0, params_.thin_object_max_beams)), params_.thin_object_depth_step);
   const double angle_step = scan.angle_increment;
   for (std::size_t i = 0; i < labels.size(); ++i) {
     if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid) || stands[i] == StandsInFront::kNo) continue;

@@ -159,10 +159,10 @@ struct PenetrationFilterParams {
   int free_space_veto_count = 2;
   // Beyond the paper (thin_object_check.hpp; docs/accuracy.md, Beyond the
   // paper 25): a kept return in a stretch of at most thin_object_max_beams
-  // returns standing in front of both sides (by edge_depth_step; the object's
-  // own returns and its mixed ones beside them) becomes a jump point when a
-  // cell holding thin_object_min_returns cached returns lies on its beam
-  // more than edge_depth_step in front of it, within thin_object_radius
+  // returns standing in front of both sides (by thin_object_depth_step; the
+  // object's own returns and its mixed ones beside them) becomes a jump point
+  // when a cell holding thin_object_min_returns cached returns lies on its
+  // beam more than thin_object_depth_step in front of it, within thin_object_radius
   // of the beam's footprint (one angular step wide): the mixed return of an
   // object thinner than the footprint. Not
   // when the rescue would restore it (rescue_min_count returns from
@@ -170,6 +170,12 @@ struct PenetrationFilterParams {
   bool thin_object_check = true;
   int thin_object_max_beams = 3;
   double thin_object_radius = 0.02;  // m
+  // Beyond the paper 37: the check's own depth step (edge_depth_step until
+  // 37). A leg's mixed return lies anywhere between the leg and the wall
+  // behind it, and the leg's cached position is the mean of returns that
+  // include its mixes, pulled back towards them: 15 cm missed the mixes
+  // that land nearest the leg.
+  double thin_object_depth_step = 0.12;  // m
   // Beyond the paper 32: the returns a cached cell must hold to be that
   // object (obs_th until 32): a leg thinner than the footprint gives few
   // returns on itself. The count the filter uses: config/filter.yaml gives it
