@@ -68,6 +68,7 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(s.penetration.thin_object_min_returns, d.penetration.thin_object_min_returns);
   EXPECT_EQ(s.penetration.thin_object_beside_no_return, d.penetration.thin_object_beside_no_return);
   EXPECT_EQ(s.penetration.thin_object_evidence_kept, d.penetration.thin_object_evidence_kept);
+  EXPECT_EQ(s.penetration.thin_object_kept_from_afar, d.penetration.thin_object_kept_from_afar);
   EXPECT_EQ(s.penetration.free_space_margin_per_m, d.penetration.free_space_margin_per_m);
   EXPECT_EQ(s.jump.noise_estimate, d.jump.noise_estimate);
   EXPECT_EQ(s.jump.noise_sampling.window_scans, d.jump.noise_sampling.window_scans);
@@ -166,6 +167,12 @@ TEST(FilterConfig, ReadsTheThinObjectDepthStep) {
   const FilterConfig c = parseFilterConfig("penetration_filter:\n  thin_object_depth_step: 0.2\n", "f.yaml");
   EXPECT_EQ(c.params.penetration.thin_object_depth_step, 0.2);
   EXPECT_EQ(c.params.penetration.edge_depth_step, PenetrationFilterParams{}.edge_depth_step) << "its own key";
+}
+
+TEST(FilterConfig, ReadsWhereTheThinObjectChecksKeptReturnsCount) {
+  const FilterConfig c = parseFilterConfig("penetration_filter:\n  thin_object_kept_from_afar: false\n", "f.yaml");
+  EXPECT_FALSE(c.params.penetration.thin_object_kept_from_afar);
+  EXPECT_TRUE(PenetrationFilterParams{}.thin_object_kept_from_afar);
 }
 
 TEST(FilterConfig, ReadsTheRescueParallax) {

@@ -158,6 +158,10 @@ struct LegScene {
   // The first this many of those returns were removed in their own frames
   // (labelled jump there, as other frames' mixed returns of a leg mostly are).
   int earlier_removed = 0;
+  // In the last this many frames before the last (all nearer to it than
+  // rescue_min_baseline) a kept return lies there too: the same leg's mixes
+  // seen from nearly the same place.
+  int near_there = 0;
   // This many beams after the one towards the leg report its range too (an
   // object that wide).
   int beside = 0;
@@ -198,6 +202,11 @@ std::uint8_t legBeamLabel(const PenetrationFilterParams& p, const LegScene& scen
   if (scene.earlier_there > 0) {
     EXPECT_GE(poseOf(kFrames - 1).y - poseOf(scene.earlier_there - 1).y, p.rescue_min_baseline);
   }
+  const int near_from = kFrames - 1 - scene.near_there;  // the first near frame
+  if (scene.near_there > 0) {
+    EXPECT_LT(poseOf(kFrames - 1).y - poseOf(near_from).y, p.rescue_min_baseline);
+    EXPECT_GT(near_from, scene.earlier_there) << "near and far frames apart";
+  }
   EXPECT_LT(scene.leg_returns, p.min_frames) << "the leg's returns must come before the warm-up ends";
   EXPECT_LT(scene.rear_leg_returns, p.min_frames) << "so must the rear leg's";
   std::uint8_t out = 0;
@@ -213,7 +222,7 @@ std::uint8_t legBeamLabel(const PenetrationFilterParams& p, const LegScene& scen
       scan.ranges[test::beamTowards(scan, sensor, std::atan2(to.y(), to.x()))] = to.norm();
     }
     std::size_t earlier_beam = scan.size();  // none
-    if (k < scene.earlier_there) {
+    if (k < scene.earlier_there || (k >= near_from && !last)) {
       const Eigen::Vector2d to = return_at - sensor_at;
       earlier_beam = test::beamTowards(scan, sensor, std::atan2(to.y(), to.x()));
       scan.ranges[earlier_beam] = to.norm();
@@ -327,6 +336,24 @@ TEST(ThinObjectCheck, ReturnsRemovedInTheirOwnFramesDoNotKeepIt) {
   evidence_alone.thin_object_evidence_kept = false;
   EXPECT_EQ(legBeamLabel(evidence_alone, {.earlier_there = 5, .earlier_removed = 5}), kValid)
       << "the rescue's evidence alone counts returns of every label";
+}
+
+// The kept returns that spare it count only from frames taken elsewhere
+// (the rescue's baseline): from nearly the same place the leg's mixes land
+// near this one, and their frames kept them for the same reason (Beyond the
+// paper 38). rescue_min_count 3, so that the four near frames would be
+// enough without the rule.
+TEST(ThinObjectCheck, KeptReturnsFromNearlyTheSamePlaceDoNotKeepIt) {
+  PenetrationFilterParams p = thinObjectsOnly();
+  ASSERT_TRUE(p.thin_object_kept_from_afar);
+  p.rescue_min_count = 3;
+  EXPECT_EQ(legBeamLabel(p, {.earlier_there = 3, .earlier_removed = 3, .near_there = 4}), kJump)
+      << "three returns from elsewhere, removed there; four kept from nearly here";
+  EXPECT_EQ(legBeamLabel(p, {.earlier_there = 3, .near_there = 4}), kValid) << "the three from elsewhere kept";
+  PenetrationFilterParams every_frame = p;
+  every_frame.thin_object_kept_from_afar = false;
+  EXPECT_EQ(legBeamLabel(every_frame, {.earlier_there = 3, .earlier_removed = 3, .near_there = 4}), kValid)
+      << "every cached frame's kept returns count (31)";
 }
 
 // Something as wide as thin_object_max_beams beams is checked; wider, it is

@@ -244,6 +244,7 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.read("thin_object_min_returns", p.thin_object_min_returns);
   s.read("thin_object_beside_no_return", p.thin_object_beside_no_return);
   s.read("thin_object_evidence_kept", p.thin_object_evidence_kept);
+  s.read("thin_object_kept_from_afar", p.thin_object_kept_from_afar);
   s.take("alignment");
   readAlignment(s, p.alignment);
   s.take("surface_memory");

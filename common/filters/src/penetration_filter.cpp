@@ -43,6 +43,7 @@ PenetrationFilter::PenetrationFilter(const PenetrationFilterParams& params)
       evidence_along_beam_(rule_, params.surface_gap, surfaceGoesOnTest(params)),
       grid_(params.cell_size, params.obstacle_threshold),
       evidence_(params.cell_size),  // the same cells as grid_: a frame's runs go into both
+      kept_from_afar_(params.cell_size),
       aligner_(params.alignment),
       free_space_(params),
       thin_objects_(params.thin_object_depth_step, params.thin_object_radius),
@@ -59,6 +60,7 @@ void PenetrationFilter::reset() {
   cache_.clear();
   grid_.clear();
   evidence_.clear();
+  kept_from_afar_.clear();
   memory_.clear();
   frames_seen_ = 0;
   last_origin_.reset();
@@ -149,11 +151,13 @@ void PenetrationFilter::admitEvidence(const Eigen::Vector2d& origin) {
 void PenetrationFilter::addRescueEvidence(const CachedFrame& frame) {
   evidence_.add(frame.votes);
   evidence_.add(frame.others);
+  if (params_.thin_object_kept_from_afar) kept_from_afar_.add(frame.votes);
 }
 
 void PenetrationFilter::removeRescueEvidence(const CachedFrame& frame) {
   evidence_.remove(frame.votes);
   evidence_.remove(frame.others);
+  if (params_.thin_object_kept_from_afar) kept_from_afar_.remove(frame.votes);
 }
 
 void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,

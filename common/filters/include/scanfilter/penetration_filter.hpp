@@ -117,6 +117,7 @@ class PenetrationFilter {
   PenetrationEvidence evidence_along_beam_;
   PenetrationGrid grid_;      // points the filter kept: the obstacle votes
   PenetrationGrid evidence_;  // every return, kept or not: for the rescue
+  PenetrationGrid kept_from_afar_;  // the kept returns (votes) of the frames in evidence_
   std::vector<Eigen::Vector2d> points_;  // world points of the frame being judged
 
  private:
@@ -175,9 +176,10 @@ class PenetrationFilter {
   int evidenceAround(const Eigen::Vector2d& p, const Eigen::Vector2d& origin) const {
     return countAround(evidence_, p, origin);
   }
-  // The cache's kept returns there (grid_'s votes), from every cached frame.
+  // The cache's kept returns there (its votes): from the frames the rescue
+  // admits with thin_object_kept_from_afar, else from every cached frame.
   int keptReturnsAround(const Eigen::Vector2d& p, const Eigen::Vector2d& origin) const {
-    return countAround(grid_, p, origin);
+    return countAround(params_.thin_object_kept_from_afar ? kept_from_afar_ : grid_, p, origin);
   }
   // thin_object_check: whether returns from elsewhere say an object stands
   // at p (the rescue's evidence holds rescue_min_count returns, and with

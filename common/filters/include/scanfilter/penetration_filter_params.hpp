@@ -198,6 +198,13 @@ struct PenetrationFilterParams {
   // grazing_vote_max_deg and cache_misdetected_points. false: the rescue's
   // evidence alone (returns of every label).
   bool thin_object_evidence_kept = true;
+  // Beyond the paper 38: those kept returns count only from the frames the
+  // rescue admits (taken rescue_min_baseline or more from the frame judged,
+  // while any cached frame is): a mixed return stays near where the same
+  // leg's mixes were seen from nearly the same place, and those frames kept
+  // theirs for the same reason; from elsewhere they land elsewhere. false:
+  // every cached frame's kept returns (31).
+  bool thin_object_kept_from_afar = true;
   // Beyond the paper: each frame is fitted to the cache before it is judged
   // (frame_alignment.hpp); a frame that does not fit is not judged.
   FrameAlignmentParams alignment;
