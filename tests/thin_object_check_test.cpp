@@ -165,6 +165,10 @@ struct LegScene {
   // This many beams after the one towards the leg report its range too (an
   // object that wide).
   int beside = 0;
+  // Not 0: in the last frame thin_object_max_beams beams either side of
+  // those report this much more than their range, instead of the wall (a
+  // background that near, wide enough that no stretch reaches past it).
+  double sides_beyond = 0.0;  // m
   // Not 0: the leg is no solid; the first this many frames each have one
   // return at its centre (before the warm-up, so they all stay valid), the
   // cell's whole count.
@@ -230,6 +234,11 @@ std::uint8_t legBeamLabel(const PenetrationFilterParams& p, const LegScene& scen
     if (last) {
       const double range = (leg - sensor_at).norm() - kLegRadius + scene.beyond_leg;
       for (int b = 0; b <= scene.beside; ++b) scan.ranges[leg_beam + static_cast<std::size_t>(b)] = range;
+      const auto side = static_cast<std::size_t>(p.thin_object_max_beams);
+      for (std::size_t b = 1; scene.sides_beyond > 0.0 && b <= side; ++b) {
+        scan.ranges[leg_beam - b] = range + scene.sides_beyond;
+        scan.ranges[leg_beam + static_cast<std::size_t>(scene.beside) + b] = range + scene.sides_beyond;
+      }
     }
     std::vector<std::uint8_t> labels(scan.size());
     for (std::size_t i = 0; i < scan.size(); ++i)
@@ -273,6 +282,10 @@ TEST(ThinObjectCheck, StepTwoRemovesTheMixedReturnBehindALeg) {
   EXPECT_EQ(legBeamLabel(wider, {.beyond_leg = 0.14}), kValid) << "14 cm: within a 15 cm step";
   wider.edge_depth_step = 0.05;
   EXPECT_EQ(legBeamLabel(wider, {.beyond_leg = 0.14}), kValid) << "edge_depth_step is not the check's step";
+  // The same step for the beams beside it: they must return farther by more.
+  EXPECT_EQ(legBeamLabel(p, {.sides_beyond = 0.14}), kJump) << "both sides 14 cm farther: beyond the 12 cm step";
+  EXPECT_EQ(legBeamLabel(p, {.sides_beyond = 0.10}), kValid) << "10 cm farther: within it";
+  EXPECT_EQ(legBeamLabel(wider, {.sides_beyond = 0.14}), kValid) << "14 cm: within a 15 cm step";
 
   PenetrationFilterParams off = p;
   off.thin_object_check = false;

@@ -151,13 +151,13 @@ void PenetrationFilter::admitEvidence(const Eigen::Vector2d& origin) {
 void PenetrationFilter::addRescueEvidence(const CachedFrame& frame) {
   evidence_.add(frame.votes);
   evidence_.add(frame.others);
-  if (params_.thin_object_kept_from_afar) kept_from_afar_.add(frame.votes);
+  if (countsKeptReturnsFromAfar()) kept_from_afar_.add(frame.votes);
 }
 
 void PenetrationFilter::removeRescueEvidence(const CachedFrame& frame) {
   evidence_.remove(frame.votes);
   evidence_.remove(frame.others);
-  if (params_.thin_object_kept_from_afar) kept_from_afar_.remove(frame.votes);
+  if (countsKeptReturnsFromAfar()) kept_from_afar_.remove(frame.votes);
 }
 
 void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,

@@ -117,7 +117,9 @@ class PenetrationFilter {
   PenetrationEvidence evidence_along_beam_;
   PenetrationGrid grid_;      // points the filter kept: the obstacle votes
   PenetrationGrid evidence_;  // every return, kept or not: for the rescue
-  PenetrationGrid kept_from_afar_;  // the kept returns (votes) of the frames in evidence_
+  // The kept returns (votes) of the frames in evidence_, while
+  // countsKeptReturnsFromAfar(); empty otherwise.
+  PenetrationGrid kept_from_afar_;
   std::vector<Eigen::Vector2d> points_;  // world points of the frame being judged
 
  private:
@@ -176,10 +178,15 @@ class PenetrationFilter {
   int evidenceAround(const Eigen::Vector2d& p, const Eigen::Vector2d& origin) const {
     return countAround(evidence_, p, origin);
   }
+  // Whether the thin-object check asks kept returns of the frames the
+  // rescue admits (Beyond the paper 38): only then is kept_from_afar_ kept.
+  bool countsKeptReturnsFromAfar() const {
+    return params_.thin_object_check && params_.thin_object_evidence_kept && params_.thin_object_kept_from_afar;
+  }
   // The cache's kept returns there (its votes): from the frames the rescue
   // admits with thin_object_kept_from_afar, else from every cached frame.
   int keptReturnsAround(const Eigen::Vector2d& p, const Eigen::Vector2d& origin) const {
-    return countAround(params_.thin_object_kept_from_afar ? kept_from_afar_ : grid_, p, origin);
+    return countAround(countsKeptReturnsFromAfar() ? kept_from_afar_ : grid_, p, origin);
   }
   // thin_object_check: whether returns from elsewhere say an object stands
   // at p (the rescue's evidence holds rescue_min_count returns, and with
@@ -230,7 +237,8 @@ class PenetrationFilter {
   // With rescue_min_baseline: the cached frames taken at least that far from
   // `origin` join the evidence; all of them while none is.
   void admitEvidence(const Eigen::Vector2d& origin);
-  // All of a frame's returns into evidence_ (the rescue's), or out of it.
+  // All of a frame's returns into evidence_ (the rescue's), and its kept ones
+  // into kept_from_afar_ (the thin-object check's), or out of them.
   void addRescueEvidence(const CachedFrame& frame);
   void removeRescueEvidence(const CachedFrame& frame);
   bool evidenceWaitsForBaseline() const {

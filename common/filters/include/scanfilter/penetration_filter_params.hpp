@@ -190,8 +190,8 @@ struct PenetrationFilterParams {
   // never marked.
   bool thin_object_beside_no_return = true;
   // Beyond the paper 31: besides the rescue's evidence, the cache's votes
-  // (the returns its frames kept, of every cached frame, near or far, judged
-  // or still warming up) must hold rescue_min_count returns within
+  // (the returns its frames kept, judged or still warming up; of every cached
+  // frame, near or far, with thin_object_kept_from_afar false) must hold rescue_min_count returns within
   // rescue_radius to spare a return in the thin-object check: other frames'
   // mixed returns of a leg land there too, but were mostly removed in their
   // own frames. What votes also follows edge_vote_margin_deg,
@@ -199,11 +199,11 @@ struct PenetrationFilterParams {
   // evidence alone (returns of every label).
   bool thin_object_evidence_kept = true;
   // Beyond the paper 38: those kept returns count only from the frames the
-  // rescue admits (taken rescue_min_baseline or more from the frame judged,
-  // while any cached frame is): a mixed return stays near where the same
-  // leg's mixes were seen from nearly the same place, and those frames kept
-  // theirs for the same reason; from elsewhere they land elsewhere. false:
-  // every cached frame's kept returns (31).
+  // rescue's evidence holds (with rescue_min_baseline, the frames that joined
+  // once the sensor was that far from where they were taken): a mixed return
+  // stays near where the same leg's mixes were seen from nearly the same
+  // place, and those frames kept theirs for the same reason; from elsewhere
+  // they land elsewhere. false: every cached frame's kept returns (31).
   bool thin_object_kept_from_afar = true;
   // Beyond the paper: each frame is fitted to the cache before it is judged
   // (frame_alignment.hpp); a frame that does not fit is not judged.
