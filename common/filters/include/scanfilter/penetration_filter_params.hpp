@@ -162,11 +162,11 @@ struct PenetrationFilterParams {
   // returns standing in front of both sides (by thin_object_depth_step; the
   // object's own returns and its mixed ones beside them) becomes a jump point
   // when a cell holding thin_object_min_returns cached returns lies on its
-  // beam more than thin_object_depth_step in front of it, within thin_object_radius
-  // of the beam's footprint (one angular step wide): the mixed return of an
-  // object thinner than the footprint. Not
-  // when the rescue would restore it (rescue_min_count returns from
-  // elsewhere within rescue_radius: an object there). false = the paper.
+  // beam more than thin_object_depth_step in front of it, within
+  // thin_object_radius of the beam's footprint (one angular step wide): the
+  // mixed return of an object thinner than the footprint. Not when the
+  // rescue would restore it (rescue_min_count returns from elsewhere within
+  // rescue_radius: an object there). false = the paper.
   bool thin_object_check = true;
   int thin_object_max_beams = 3;
   double thin_object_radius = 0.02;  // m
@@ -190,13 +190,14 @@ struct PenetrationFilterParams {
   // never marked.
   bool thin_object_beside_no_return = true;
   // Beyond the paper 31: besides the rescue's evidence, the cache's votes
-  // (the returns its frames kept, judged or still warming up; of every cached
-  // frame, near or far, with thin_object_kept_from_afar false) must hold rescue_min_count returns within
-  // rescue_radius to spare a return in the thin-object check: other frames'
-  // mixed returns of a leg land there too, but were mostly removed in their
-  // own frames. What votes also follows edge_vote_margin_deg,
-  // grazing_vote_max_deg and cache_misdetected_points. false: the rescue's
-  // evidence alone (returns of every label).
+  // (the returns its frames kept, judged or still warming up; of every
+  // cached frame, near or far, with thin_object_kept_from_afar false) must
+  // hold rescue_min_count returns within rescue_radius to spare a return in
+  // the thin-object check: other frames' mixed returns of a leg land there
+  // too, but were mostly removed in their own frames. What votes also
+  // follows edge_vote_margin_deg, grazing_vote_max_deg and
+  // cache_misdetected_points. false: the rescue's evidence alone (returns of
+  // every label).
   bool thin_object_evidence_kept = true;
   // Beyond the paper 38: those kept returns count only from the frames the
   // rescue's evidence holds (with rescue_min_baseline, the frames that joined
