@@ -208,7 +208,8 @@ std::uint8_t legBeamLabel(const PenetrationFilterParams& p, const LegScene& scen
   }
   const int near_from = kFrames - 1 - scene.near_there;  // the first near frame
   if (scene.near_there > 0) {
-    EXPECT_LT(poseOf(kFrames - 1).y - poseOf(near_from).y, p.rescue_min_baseline);
+    // Near for the baseline the defaults set (without one, nothing is near).
+    EXPECT_LT(poseOf(kFrames - 1).y - poseOf(near_from).y, PenetrationFilterParams{}.rescue_min_baseline);
     EXPECT_GT(near_from, scene.earlier_there) << "near and far frames apart";
   }
   EXPECT_LT(scene.leg_returns, p.min_frames) << "the leg's returns must come before the warm-up ends";
@@ -367,6 +368,10 @@ TEST(ThinObjectCheck, KeptReturnsFromNearlyTheSamePlaceDoNotKeepIt) {
   every_frame.thin_object_kept_from_afar = false;
   EXPECT_EQ(legBeamLabel(every_frame, {.earlier_there = 3, .earlier_removed = 3, .near_there = 4}), kValid)
       << "every cached frame's kept returns count (31)";
+  PenetrationFilterParams no_baseline = p;
+  no_baseline.rescue_min_baseline = 0.0;
+  EXPECT_EQ(legBeamLabel(no_baseline, {.earlier_there = 3, .earlier_removed = 3, .near_there = 4}), kValid)
+      << "without a baseline every frame is taken from elsewhere";
 }
 
 // Something as wide as thin_object_max_beams beams is checked; wider, it is

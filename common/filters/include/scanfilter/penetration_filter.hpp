@@ -180,8 +180,11 @@ class PenetrationFilter {
   }
   // Whether the thin-object check asks kept returns of the frames the
   // rescue admits (Beyond the paper 38): only then is kept_from_afar_ kept.
+  // Without a baseline every frame is admitted as it is cached, and grid_
+  // holds the same votes.
   bool countsKeptReturnsFromAfar() const {
-    return params_.thin_object_check && params_.thin_object_evidence_kept && params_.thin_object_kept_from_afar;
+    return params_.thin_object_check && params_.thin_object_evidence_kept && params_.thin_object_kept_from_afar &&
+           evidenceWaitsForBaseline();
   }
   // The cache's kept returns there (its votes): from the frames the rescue
   // admits with thin_object_kept_from_afar, else from every cached frame.
