@@ -237,6 +237,7 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.read("free_space_dip", p.free_space_dip);
   s.read("free_space_min_frames", p.free_space_min_frames);
   s.read("free_space_veto_count", p.free_space_veto_count);
+  s.read("free_space_lone_returns_vote", p.free_space_lone_returns_vote);
   s.read("thin_object_check", p.thin_object_check);
   s.read("thin_object_max_beams", p.thin_object_max_beams);
   s.read("thin_object_radius", p.thin_object_radius);

@@ -257,6 +257,9 @@ class PenetrationFilter {
   std::size_t resets_ = 0;
   FrameAligner aligner_;
   FreeSpaceCheck free_space_;
+  // The judged frame's lone returns the free-space check marked, which vote
+  // when it is cached (free_space_lone_returns_vote); empty when none did.
+  BeamMask lone_seen_through_;
   ThinObjectCheck thin_objects_;
   SurfaceMemory memory_;
   MirrorGhostCheck mirror_ghosts_;

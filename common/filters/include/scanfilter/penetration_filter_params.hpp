@@ -157,6 +157,19 @@ struct PenetrationFilterParams {
   // config/filter.yaml gives it for 1° steps and FilterConfig::resolve
   // scales it to the sensor's.
   int free_space_veto_count = 2;
+  // Beyond the paper 39: a lone return (one beam in front of both sides by
+  // edge_depth_step, or beside a beam without a return) that the check
+  // marks still votes in the cache. Other viewpoints look through glass and
+  // past a mirror (its light goes elsewhere), so the check cannot tell a
+  // pane's or a mirror's occasional direct return from a thin leg's mixed
+  // one; but a pane's pile up on its line frame after frame, where mixed
+  // returns move with the viewpoint and seldom reach obs_th in one cell.
+  // Without their votes the cache never holds the pane, and step 2 never
+  // finds what lies behind it. A marked return beside one depth edge (mixed
+  // at an edge) does not vote: measured, those votes cost the Mines logs
+  // their selectivity (docs/accuracy.md, Beyond the paper 39). false: no
+  // marked return votes (until 39).
+  bool free_space_lone_returns_vote = true;
   // Beyond the paper (thin_object_check.hpp; docs/accuracy.md, Beyond the
   // paper 25): a kept return in a stretch of at most thin_object_max_beams
   // returns standing in front of both sides (by thin_object_depth_step; the
