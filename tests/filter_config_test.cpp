@@ -61,6 +61,7 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(s.penetration.free_space_dip, d.penetration.free_space_dip);
   EXPECT_EQ(s.penetration.free_space_min_frames, d.penetration.free_space_min_frames);
   EXPECT_EQ(s.penetration.free_space_veto_count, d.penetration.free_space_veto_count);
+  EXPECT_EQ(s.penetration.free_space_lone_returns_vote, d.penetration.free_space_lone_returns_vote);
   EXPECT_EQ(s.penetration.thin_object_check, d.penetration.thin_object_check);
   EXPECT_EQ(s.penetration.thin_object_max_beams, d.penetration.thin_object_max_beams);
   EXPECT_EQ(s.penetration.thin_object_radius, d.penetration.thin_object_radius);
@@ -173,6 +174,12 @@ TEST(FilterConfig, ReadsWhereTheThinObjectChecksKeptReturnsCount) {
   const FilterConfig c = parseFilterConfig("penetration_filter:\n  thin_object_kept_from_afar: false\n", "f.yaml");
   EXPECT_FALSE(c.params.penetration.thin_object_kept_from_afar);
   EXPECT_TRUE(PenetrationFilterParams{}.thin_object_kept_from_afar);
+}
+
+TEST(FilterConfig, ReadsWhetherTheFreeSpaceChecksLoneReturnsVote) {
+  const FilterConfig c = parseFilterConfig("penetration_filter:\n  free_space_lone_returns_vote: false\n", "f.yaml");
+  EXPECT_FALSE(c.params.penetration.free_space_lone_returns_vote);
+  EXPECT_TRUE(PenetrationFilterParams{}.free_space_lone_returns_vote);
 }
 
 TEST(FilterConfig, ReadsTheRescueParallax) {

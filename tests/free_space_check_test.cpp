@@ -165,14 +165,23 @@ TEST(FreeSpaceCheck, AtLeastMinFramesAndMoreThanHit) {
 // made a mixed return, halfway between the leg and the wall behind. In the
 // first `earlier_near` frames (all 0.25 m+ from the last) one beam ends where
 // that mixed return will lie, as another viewpoint's mixed return of the leg
-// may. Returns the labels of the last frame for both implementations, and
-// the beams of the mixed return and of the leg.
+// may. Returns the labels of the last frame for both implementations, the
+// beams of the mixed return and of the leg, and the votes each cache holds
+// where the mixed return lies once the last frame joined it.
+//
+// `alone`: the last frame's mixed return is instead a lone return halfway to
+// the far wall, away from the leg (beams on both sides go on to the wall): a
+// thin leg's mixed return, or a pane's direct one, in one frame.
 struct LastFrame {
   std::vector<std::uint8_t> reference, fast;
   std::size_t mixed = 0, leg = 0;
+  int reference_votes = 0, fast_votes = 0;  // in the mixed return's cell
 };
 
-LastFrame filterWithAMixedReturn(const PenetrationFilterParams& p, int earlier_near = 0) {
+enum class MixedReturn { kBesideTheLeg, kAlone };
+
+LastFrame filterWithAMixedReturn(const PenetrationFilterParams& p, int earlier_near = 0,
+                                 MixedReturn where = MixedReturn::kBesideTheLeg) {
   const SensorInfo sensor = test::simpleSensor();
   const World world = World{}
                           .wall({3, -3}, {3, 3})
@@ -192,6 +201,11 @@ LastFrame filterWithAMixedReturn(const PenetrationFilterParams& p, int earlier_n
   // The mixed return of the last frame: the first beam past the leg's edge
   // that reaches the wall, pulled halfway to the leg.
   const auto mixReturn = [&](Scan& scan) {
+    if (where == MixedReturn::kAlone) {
+      out.mixed = test::beamTowards(scan, sensor, 30.0 * kDeg);
+      scan.ranges[out.mixed] *= 0.5;
+      return;
+    }
     out.mixed = test::beamTowards(scan, sensor, std::atan2(-poseOf(kFrames - 1).y, 1.0));
     while (scan.ranges[out.mixed] < 2.0) ++out.mixed;
     scan.ranges[out.mixed] = 0.5 * (scan.ranges[out.mixed - 1] + scan.ranges[out.mixed]);
@@ -218,6 +232,8 @@ LastFrame filterWithAMixedReturn(const PenetrationFilterParams& p, int earlier_n
     reference->apply(scan, sensor, out.reference);
     fast->apply(scan, sensor, out.fast);
   }
+  out.reference_votes = reference->grid().count(reference->grid().cellOf(mixed_at));
+  out.fast_votes = fast->grid().count(fast->grid().cellOf(mixed_at));
   return out;
 }
 
@@ -240,6 +256,32 @@ TEST(FreeSpaceCheck, StepTwoRemovesAMixedReturnAndKeepsTheLeg) {
   no_parallax.rescue_min_baseline = 2.0;  // no cached frame is that far
   EXPECT_EQ(filterWithAMixedReturn(no_parallax).fast[on.mixed], kValid)
       << "frames from (nearly) the same place say nothing";
+}
+
+// Beyond the paper 39: other viewpoints see through glass, so the check also
+// marks a pane's occasional direct return, a lone one; it still votes, so
+// that the pane's returns pile up in the cache over the frames. One beside a
+// single depth edge (mixed at an edge) does not.
+TEST(FreeSpaceCheck, ALoneReturnItMarksStillVotesInTheCache) {
+  const PenetrationFilterParams defaults;
+  ASSERT_TRUE(defaults.free_space_lone_returns_vote);
+  const LastFrame alone = filterWithAMixedReturn(defaults, 0, MixedReturn::kAlone);
+  EXPECT_EQ(alone.reference, alone.fast);
+  EXPECT_EQ(alone.fast[alone.mixed], kJump) << "earlier frames saw the wall through it";
+  EXPECT_EQ(alone.fast_votes, 1) << "marked, and still a vote where it lies";
+  EXPECT_EQ(alone.reference_votes, 1);
+
+  const LastFrame beside = filterWithAMixedReturn(defaults);
+  EXPECT_EQ(beside.fast[beside.mixed], kJump);
+  EXPECT_EQ(beside.fast_votes, 0) << "nearer than the wall on one side only: a mixed return at an edge";
+  EXPECT_EQ(beside.reference_votes, 0);
+
+  PenetrationFilterParams off;
+  off.free_space_lone_returns_vote = false;
+  const LastFrame alone_off = filterWithAMixedReturn(off, 0, MixedReturn::kAlone);
+  EXPECT_EQ(alone_off.fast[alone_off.mixed], kJump) << "the switch changes the votes, not the label";
+  EXPECT_EQ(alone_off.fast_votes, 0);
+  EXPECT_EQ(alone_off.reference_votes, 0);
 }
 
 // Returns of other frames near the point vouch for a surface there, but one
