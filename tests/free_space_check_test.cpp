@@ -175,8 +175,19 @@ TEST(FreeSpaceCheck, AtLeastMinFramesAndMoreThanHit) {
 struct LastFrame {
   std::vector<std::uint8_t> reference, fast;
   std::size_t mixed = 0, leg = 0;
-  int reference_votes = 0, fast_votes = 0;  // in the mixed return's cell
+  int reference_votes = 0, fast_votes = 0;  // around the mixed return
 };
+
+// Votes in the cell of p and the eight around it: p may lie on a cell's edge,
+// and the filter computes its world point by another path than the test.
+// Nothing else lies that near the mixed return: other frames saw through it.
+int votesAround(const PenetrationGrid& grid, const Eigen::Vector2d& p) {
+  const CellIndex c = grid.cellOf(p);
+  int votes = 0;
+  for (int dx = -1; dx <= 1; ++dx)
+    for (int dy = -1; dy <= 1; ++dy) votes += grid.count({c.x + dx, c.y + dy});
+  return votes;
+}
 
 enum class MixedReturn { kBesideTheLeg, kAlone };
 
@@ -232,8 +243,11 @@ LastFrame filterWithAMixedReturn(const PenetrationFilterParams& p, int earlier_n
     reference->apply(scan, sensor, out.reference);
     fast->apply(scan, sensor, out.fast);
   }
-  out.reference_votes = reference->grid().count(reference->grid().cellOf(mixed_at));
-  out.fast_votes = fast->grid().count(fast->grid().cellOf(mixed_at));
+  // Every frame joined the cache (0.1 s apart, none expired), the last one too.
+  EXPECT_EQ(fast->cachedFrames(), static_cast<std::size_t>(kFrames));
+  EXPECT_EQ(reference->cachedFrames(), static_cast<std::size_t>(kFrames));
+  out.reference_votes = votesAround(reference->grid(), mixed_at);
+  out.fast_votes = votesAround(fast->grid(), mixed_at);
   return out;
 }
 
@@ -272,6 +286,7 @@ TEST(FreeSpaceCheck, ALoneReturnItMarksStillVotesInTheCache) {
   EXPECT_EQ(alone.reference_votes, 1);
 
   const LastFrame beside = filterWithAMixedReturn(defaults);
+  EXPECT_EQ(beside.reference, beside.fast);
   EXPECT_EQ(beside.fast[beside.mixed], kJump);
   EXPECT_EQ(beside.fast_votes, 0) << "nearer than the wall on one side only: a mixed return at an edge";
   EXPECT_EQ(beside.reference_votes, 0);
@@ -279,6 +294,7 @@ TEST(FreeSpaceCheck, ALoneReturnItMarksStillVotesInTheCache) {
   PenetrationFilterParams off;
   off.free_space_lone_returns_vote = false;
   const LastFrame alone_off = filterWithAMixedReturn(off, 0, MixedReturn::kAlone);
+  EXPECT_EQ(alone_off.reference, alone_off.fast);
   EXPECT_EQ(alone_off.fast[alone_off.mixed], kJump) << "the switch changes the votes, not the label";
   EXPECT_EQ(alone_off.fast_votes, 0);
   EXPECT_EQ(alone_off.reference_votes, 0);

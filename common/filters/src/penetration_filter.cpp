@@ -125,7 +125,10 @@ void PenetrationFilter::cacheFrame(const Scan& scan, const SensorInfo& sensor, c
     if (code == PointCode::kNoReturn) continue;
     // At a depth edge or at grazing incidence a return lands off its surface.
     const bool off_its_surface = (!edge.empty() && edge[i]) || (!grazing.empty() && grazing[i]);
-    const bool lone_seen_through = !lone_seen_through_.empty() && lone_seen_through_[i];
+    // The mask is the free-space check's: it holds only while the return is
+    // still the jump point that check made it.
+    const bool lone_seen_through =
+        code == PointCode::kJump && !lone_seen_through_.empty() && lone_seen_through_[i];
     const bool votes = !off_its_surface && (code == PointCode::kValid || lone_seen_through ||
                                     (code == PointCode::kMisdetected && params_.cache_misdetected_points));
     if (votes) grid_.appendToRuns(frame.votes, points_[i]);
@@ -455,10 +458,10 @@ void PenetrationFilter::markSeenThrough(const Scan& scan, const Eigen::Vector2d&
   // Candidates: returns with a neighbour farther by edge_depth_step, where
   // mixed returns are. Any return counts as that neighbour, kept or not.
   const BeamMask candidate = nearSideOfDepthEdge(scan, allReturns(scan), 1, params_.edge_depth_step);
-  const std::vector<StandsInFront> stands = params_.free_space_lone_returns_vote
-                                                ? standingInFront(scan, 1, params_.edge_depth_step)
-                                                : std::vector<StandsInFront>(scan.size(), StandsInFront::kNo);
-  lone_seen_through_.assign(scan.size(), false);
+  const bool lone_returns_vote = params_.free_space_lone_returns_vote;
+  const std::vector<StandsInFront> stands =
+      lone_returns_vote ? standingInFront(scan, 1, params_.edge_depth_step) : std::vector<StandsInFront>{};
+  if (lone_returns_vote) lone_seen_through_.assign(scan.size(), false);
   for (std::size_t i = 0; i < labels.size(); ++i) {
     if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid) || !candidate[i]) continue;
     // A return the rescue's evidence (returns of frames from elsewhere)
@@ -475,7 +478,7 @@ void PenetrationFilter::markSeenThrough(const Scan& scan, const Eigen::Vector2d&
     }
     if (!free_space_.seenThrough(through, hits)) continue;
     labels[i] = static_cast<std::uint8_t>(PointCode::kJump);
-    lone_seen_through_.set(i, stands[i] != StandsInFront::kNo);
+    if (lone_returns_vote) lone_seen_through_.set(i, stands[i] != StandsInFront::kNo);
   }
 }
 

@@ -115,9 +115,11 @@ class PenetrationFilter {
   PenetrationFilterParams params_;
   PenetrationRule rule_;
   PenetrationEvidence evidence_along_beam_;
-  PenetrationGrid grid_;      // points the filter kept: the obstacle votes
+  // The obstacle votes: points the filter kept, and the lone returns the
+  // free-space check marked (free_space_lone_returns_vote).
+  PenetrationGrid grid_;
   PenetrationGrid evidence_;  // every return, kept or not: for the rescue
-  // The kept returns (votes) of the frames in evidence_, while
+  // The votes (as grid_'s) of the frames in evidence_, while
   // countsKeptReturnsFromAfar(); empty otherwise.
   PenetrationGrid kept_from_afar_;
   std::vector<Eigen::Vector2d> points_;  // world points of the frame being judged
@@ -186,7 +188,8 @@ class PenetrationFilter {
     return params_.thin_object_check && params_.thin_object_evidence_kept && params_.thin_object_kept_from_afar &&
            evidenceWaitsForBaseline();
   }
-  // The cache's kept returns there (its votes): from the frames the rescue
+  // The cache's votes there (its kept returns, and the lone ones the
+  // free-space check marked): from the frames the rescue
   // admits with thin_object_kept_from_afar, else from every cached frame.
   int keptReturnsAround(const Eigen::Vector2d& p, const Eigen::Vector2d& origin) const {
     return countAround(countsKeptReturnsFromAfar() ? kept_from_afar_ : grid_, p, origin);
@@ -258,7 +261,8 @@ class PenetrationFilter {
   FrameAligner aligner_;
   FreeSpaceCheck free_space_;
   // The judged frame's lone returns the free-space check marked, which vote
-  // when it is cached (free_space_lone_returns_vote); empty when none did.
+  // when it is cached (free_space_lone_returns_vote); empty when the check
+  // did not run on this frame or the key is off.
   BeamMask lone_seen_through_;
   ThinObjectCheck thin_objects_;
   SurfaceMemory memory_;

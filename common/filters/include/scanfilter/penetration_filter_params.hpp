@@ -167,8 +167,11 @@ struct PenetrationFilterParams {
   // Without their votes the cache never holds the pane, and step 2 never
   // finds what lies behind it. A marked return beside one depth edge (mixed
   // at an edge) does not vote: measured, those votes cost the Mines logs
-  // their selectivity (docs/accuracy.md, Beyond the paper 39). false: no
-  // marked return votes (until 39).
+  // their selectivity (docs/accuracy.md, Beyond the paper 39). A lone vote
+  // is a vote like a kept return's, also for the thin-object check's kept
+  // returns (31; kept out of them, measured, more valid returns went). With
+  // edge_vote_margin_deg > 0 no lone return votes: it lies beside a depth
+  // edge. false: no marked return votes (until 39).
   bool free_space_lone_returns_vote = true;
   // Beyond the paper (thin_object_check.hpp; docs/accuracy.md, Beyond the
   // paper 25): a kept return in a stretch of at most thin_object_max_beams
@@ -208,8 +211,8 @@ struct PenetrationFilterParams {
   // hold rescue_min_count returns within rescue_radius to spare a return in
   // the thin-object check: other frames' mixed returns of a leg land there
   // too, but were mostly removed in their own frames. What votes also
-  // follows edge_vote_margin_deg, grazing_vote_max_deg and
-  // cache_misdetected_points. false: the rescue's evidence alone (returns of
+  // follows edge_vote_margin_deg, grazing_vote_max_deg,
+  // cache_misdetected_points and free_space_lone_returns_vote. false: the rescue's evidence alone (returns of
   // every label).
   bool thin_object_evidence_kept = true;
   // Beyond the paper 38: those kept returns count only from the frames the
