@@ -212,8 +212,8 @@ struct PenetrationFilterParams {
   // the thin-object check: other frames' mixed returns of a leg land there
   // too, but were mostly removed in their own frames. What votes also
   // follows edge_vote_margin_deg, grazing_vote_max_deg,
-  // cache_misdetected_points and free_space_lone_returns_vote. false: the rescue's evidence alone (returns of
-  // every label).
+  // cache_misdetected_points and free_space_lone_returns_vote. false: the
+  // rescue's evidence alone (returns of every label).
   bool thin_object_evidence_kept = true;
   // Beyond the paper 38: those kept returns count only from the frames the
   // rescue's evidence holds (with rescue_min_baseline, the frames that joined
