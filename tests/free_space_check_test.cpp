@@ -169,9 +169,10 @@ TEST(FreeSpaceCheck, AtLeastMinFramesAndMoreThanHit) {
 // beams of the mixed return and of the leg, and the votes each cache holds
 // where the mixed return lies once the last frame joined it.
 //
-// `alone`: the last frame's mixed return is instead a lone return halfway to
+// `kAlone`: the last frame's mixed return is instead a lone return halfway to
 // the far wall, away from the leg (beams on both sides go on to the wall): a
 // thin leg's mixed return, or a pane's direct one, in one frame.
+// `kAloneBesideNoReturn`: the same with the next beam returning nothing.
 struct LastFrame {
   std::vector<std::uint8_t> reference, fast;
   std::size_t mixed = 0, leg = 0;
@@ -189,7 +190,7 @@ int votesAround(const PenetrationGrid& grid, const Eigen::Vector2d& p) {
   return votes;
 }
 
-enum class MixedReturn { kBesideTheLeg, kAlone };
+enum class MixedReturn { kBesideTheLeg, kAlone, kAloneBesideNoReturn };
 
 LastFrame filterWithAMixedReturn(const PenetrationFilterParams& p, int earlier_near = 0,
                                  MixedReturn where = MixedReturn::kBesideTheLeg) {
@@ -212,9 +213,10 @@ LastFrame filterWithAMixedReturn(const PenetrationFilterParams& p, int earlier_n
   // The mixed return of the last frame: the first beam past the leg's edge
   // that reaches the wall, pulled halfway to the leg.
   const auto mixReturn = [&](Scan& scan) {
-    if (where == MixedReturn::kAlone) {
+    if (where != MixedReturn::kBesideTheLeg) {
       out.mixed = test::beamTowards(scan, sensor, 30.0 * kDeg);
       scan.ranges[out.mixed] *= 0.5;
+      if (where == MixedReturn::kAloneBesideNoReturn) scan.ranges[out.mixed + 1] = kNaN;
       return;
     }
     out.mixed = test::beamTowards(scan, sensor, std::atan2(-poseOf(kFrames - 1).y, 1.0));
@@ -275,7 +277,8 @@ TEST(FreeSpaceCheck, StepTwoRemovesAMixedReturnAndKeepsTheLeg) {
 // Beyond the paper 39: other viewpoints see through glass, so the check also
 // marks a pane's occasional direct return, a lone one; it still votes, so
 // that the pane's returns pile up in the cache over the frames. One beside a
-// single depth edge (mixed at an edge) does not.
+// single depth edge (mixed at an edge) does not, nor one beside a beam
+// without a return.
 TEST(FreeSpaceCheck, ALoneReturnItMarksStillVotesInTheCache) {
   const PenetrationFilterParams defaults;
   ASSERT_TRUE(defaults.free_space_lone_returns_vote);
@@ -290,6 +293,12 @@ TEST(FreeSpaceCheck, ALoneReturnItMarksStillVotesInTheCache) {
   EXPECT_EQ(beside.fast[beside.mixed], kJump);
   EXPECT_EQ(beside.fast_votes, 0) << "nearer than the wall on one side only: a mixed return at an edge";
   EXPECT_EQ(beside.reference_votes, 0);
+
+  const LastFrame open = filterWithAMixedReturn(defaults, 0, MixedReturn::kAloneBesideNoReturn);
+  EXPECT_EQ(open.reference, open.fast);
+  EXPECT_EQ(open.fast[open.mixed], kJump) << "the wall on its other side was seen through it";
+  EXPECT_EQ(open.fast_votes, 0) << "beside a beam without a return: not in front of both sides";
+  EXPECT_EQ(open.reference_votes, 0);
 
   PenetrationFilterParams off;
   off.free_space_lone_returns_vote = false;

@@ -478,7 +478,7 @@ void PenetrationFilter::markSeenThrough(const Scan& scan, const Eigen::Vector2d&
     }
     if (!free_space_.seenThrough(through, hits)) continue;
     labels[i] = static_cast<std::uint8_t>(PointCode::kJump);
-    if (lone_returns_vote) lone_seen_through_.set(i, stands[i] != StandsInFront::kNo);
+    if (lone_returns_vote) lone_seen_through_.set(i, stands[i] == StandsInFront::kOfBothSides);
   }
 }
 
