@@ -173,6 +173,8 @@ TEST(FreeSpaceCheck, AtLeastMinFramesAndMoreThanHit) {
 // the far wall, away from the leg (beams on both sides go on to the wall): a
 // thin leg's mixed return, or a pane's direct one, in one frame.
 // `kAloneBesideNoReturn`: the same with the next beam returning nothing.
+// `kAloneBehindAPost`: the same behind a post 1 cm thick standing on that
+// beam 1 m out, which the beams beside it miss: the post's mixed return.
 struct LastFrame {
   std::vector<std::uint8_t> reference, fast;
   std::size_t mixed = 0, leg = 0;
@@ -190,22 +192,27 @@ int votesAround(const PenetrationGrid& grid, const Eigen::Vector2d& p) {
   return votes;
 }
 
-enum class MixedReturn { kBesideTheLeg, kAlone, kAloneBesideNoReturn };
+enum class MixedReturn { kBesideTheLeg, kAlone, kAloneBesideNoReturn, kAloneBehindAPost };
 
 LastFrame filterWithAMixedReturn(const PenetrationFilterParams& p, int earlier_near = 0,
                                  MixedReturn where = MixedReturn::kBesideTheLeg) {
   const SensorInfo sensor = test::simpleSensor();
-  const World world = World{}
-                          .wall({3, -3}, {3, 3})
-                          .wall({-3, -3}, {3, -3})
-                          .wall({-3, 3}, {3, 3})
-                          .wall({-3, -3}, {-3, 3})
-                          .leg({1.0, 0.0}, 0.03);
+  constexpr int kFrames = 16;
+  const auto poseOf = [](int k) { return Pose2{0.0, 0.05 * k, 0.0}; };
+  World world = World{}
+                    .wall({3, -3}, {3, 3})
+                    .wall({-3, -3}, {3, -3})
+                    .wall({-3, 3}, {3, 3})
+                    .wall({-3, -3}, {-3, 3})
+                    .leg({1.0, 0.0}, 0.03);
+  constexpr double kAloneBearing = 30.0 * kDeg;
+  if (where == MixedReturn::kAloneBehindAPost)
+    world.leg(Eigen::Vector2d(0.0, poseOf(kFrames - 1).y) +
+                  Eigen::Vector2d(std::cos(kAloneBearing), std::sin(kAloneBearing)),
+              0.01);
   auto reference = makePenetrationFilter(p, Implementation::kReference);
   auto fast = makePenetrationFilter(p, Implementation::kFast);
   LastFrame out;
-  constexpr int kFrames = 16;
-  const auto poseOf = [](int k) { return Pose2{0.0, 0.05 * k, 0.0}; };
   // The frames with an earlier return must count as taken from elsewhere.
   if (earlier_near > 0) {
     EXPECT_GE(poseOf(kFrames - 1).y - poseOf(earlier_near - 1).y, p.rescue_min_baseline);
@@ -214,7 +221,9 @@ LastFrame filterWithAMixedReturn(const PenetrationFilterParams& p, int earlier_n
   // that reaches the wall, pulled halfway to the leg.
   const auto mixReturn = [&](Scan& scan) {
     if (where != MixedReturn::kBesideTheLeg) {
-      out.mixed = test::beamTowards(scan, sensor, 30.0 * kDeg);
+      out.mixed = test::beamTowards(scan, sensor, kAloneBearing);
+      // Halfway to the wall (behind the post, whose range the beam gives).
+      if (where == MixedReturn::kAloneBehindAPost) scan.ranges[out.mixed] = scan.ranges[out.mixed + 1];
       scan.ranges[out.mixed] *= 0.5;
       if (where == MixedReturn::kAloneBesideNoReturn) scan.ranges[out.mixed + 1] = kNaN;
       return;
@@ -278,7 +287,8 @@ TEST(FreeSpaceCheck, StepTwoRemovesAMixedReturnAndKeepsTheLeg) {
 // marks a pane's occasional direct return, a lone one; it still votes, so
 // that the pane's returns pile up in the cache over the frames. One beside a
 // single depth edge (mixed at an edge) does not, nor one beside a beam
-// without a return.
+// without a return, nor one with a cached object in its footprint in front
+// of it (that object's mixed return).
 TEST(FreeSpaceCheck, ALoneReturnItMarksStillVotesInTheCache) {
   const PenetrationFilterParams defaults;
   ASSERT_TRUE(defaults.free_space_lone_returns_vote);
@@ -299,6 +309,12 @@ TEST(FreeSpaceCheck, ALoneReturnItMarksStillVotesInTheCache) {
   EXPECT_EQ(open.fast[open.mixed], kJump) << "the wall on its other side was seen through it";
   EXPECT_EQ(open.fast_votes, 0) << "beside a beam without a return: not in front of both sides";
   EXPECT_EQ(open.reference_votes, 0);
+
+  const LastFrame post = filterWithAMixedReturn(defaults, 0, MixedReturn::kAloneBehindAPost);
+  EXPECT_EQ(post.reference, post.fast);
+  EXPECT_EQ(post.fast[post.mixed], kJump) << "earlier frames saw the wall through it, past the post";
+  EXPECT_EQ(post.fast_votes, 0) << "the post the cache holds stands in its footprint: the post's mixed return";
+  EXPECT_EQ(post.reference_votes, 0);
 
   PenetrationFilterParams off;
   off.free_space_lone_returns_vote = false;

@@ -478,7 +478,12 @@ void PenetrationFilter::markSeenThrough(const Scan& scan, const Eigen::Vector2d&
     }
     if (!free_space_.seenThrough(through, hits)) continue;
     labels[i] = static_cast<std::uint8_t>(PointCode::kJump);
-    if (lone_returns_vote) lone_seen_through_.set(i, stands[i] == StandsInFront::kOfBothSides);
+    // A thin object's mixed return has that object in its footprint in front
+    // of it (the thin-object check's own test); a pane's direct return has
+    // nothing there.
+    if (lone_returns_vote)
+      lone_seen_through_.set(i, stands[i] == StandsInFront::kOfBothSides &&
+                                    !objectInFootprint(origin, points_[i], scan.angle_increment));
   }
 }
 

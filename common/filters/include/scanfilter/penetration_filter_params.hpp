@@ -167,8 +167,10 @@ struct PenetrationFilterParams {
   // finds what lies behind it. A marked return beside one depth edge (mixed
   // at an edge) does not vote: measured, those votes cost the Mines logs
   // their selectivity; nor one beside a beam without a return (the mix of
-  // two objects, 30): measured, more valid returns went (docs/accuracy.md,
-  // Beyond the paper 39). A lone vote
+  // two objects, 30), nor one with a cached object in its footprint in front
+  // of it (that object's mixed return: the thin-object check's test, 25):
+  // measured, more valid returns went (docs/accuracy.md, Beyond the paper
+  // 39). A lone vote
   // is a vote like a kept return's, also for the thin-object check's kept
   // returns (31; kept out of them, measured, more valid returns went). With
   // edge_vote_margin_deg > 0 no lone return votes: it lies beside a depth
