@@ -182,7 +182,7 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
   const bool caches = cachesFrameAt(scan.stamp);
   if (caches) makeRoomForAFrame();
   if (evidenceWaitsForBaseline()) admitEvidence(origin);
-  lone_seen_through_ = BeamMask{};  // a frame not judged (or not checked) marked none
+  lone_seen_through_.clear();  // a frame not judged (or not checked) marked none
   if (warmedUp()) {
     const Judgement judgement = alignAndJudge(scan, sensor, labels);
     correction_ = judgement.correction;

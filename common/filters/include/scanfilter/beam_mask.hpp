@@ -20,6 +20,8 @@ class BeamMask {
   void set(std::size_t beam, bool value) { flags_[beam] = value ? 1 : 0; }
   void push_back(bool value) { flags_.push_back(value ? 1 : 0); }
   void assign(std::size_t beams, bool value) { flags_.assign(beams, value ? 1 : 0); }
+  // Empty, keeping the storage for the next scan's mask.
+  void clear() { flags_.clear(); }
   std::size_t size() const { return flags_.size(); }
   bool empty() const { return flags_.empty(); }
   bool operator==(const BeamMask&) const = default;

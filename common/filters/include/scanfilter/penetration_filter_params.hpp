@@ -158,20 +158,20 @@ struct PenetrationFilterParams {
   // scales it to the sensor's.
   int free_space_veto_count = 2;
   // Beyond the paper 39: a lone return (one beam in front of both sides by
-  // edge_depth_step) that the check marks still votes in the cache. Other viewpoints look through glass and
-  // past a mirror (its light goes elsewhere), so the check cannot tell a
-  // pane's or a mirror's occasional direct return from a thin leg's mixed
-  // one; but a pane's pile up on its line frame after frame, where mixed
-  // returns move with the viewpoint and seldom reach obs_th in one cell.
-  // Without their votes the cache never holds the pane, and step 2 never
-  // finds what lies behind it. A marked return beside one depth edge (mixed
-  // at an edge) does not vote: measured, those votes cost the Mines logs
-  // their selectivity; nor one beside a beam without a return (the mix of
-  // two objects, 30), nor one with a cached object in its footprint in front
-  // of it (that object's mixed return: the thin-object check's test, 25):
-  // measured, more valid returns went (docs/accuracy.md, Beyond the paper
-  // 39). A lone vote
-  // is a vote like a kept return's, also for the thin-object check's kept
+  // edge_depth_step) that the check marks still votes in the cache. Other
+  // viewpoints look through glass and past a mirror (its light goes
+  // elsewhere), so the check cannot tell a pane's or a mirror's occasional
+  // direct return from a thin leg's mixed one; but a pane's pile up on its
+  // line frame after frame, where mixed returns move with the viewpoint and
+  // seldom reach obs_th in one cell. Without their votes the cache never
+  // holds the pane, and step 2 never finds what lies behind it. A marked
+  // return beside one depth edge (mixed at an edge) does not vote:
+  // measured, those votes cost the Mines logs their selectivity; nor one
+  // beside a beam without a return (the mix of two objects, 30), nor one
+  // with a cached object in its footprint in front of it (that object's
+  // mixed return: the thin-object check's test, 25): measured, more valid
+  // returns went (docs/accuracy.md, Beyond the paper 39). A lone vote is a
+  // vote like a kept return's, also for the thin-object check's kept
   // returns (31; kept out of them, measured, more valid returns went). With
   // edge_vote_margin_deg > 0 no lone return votes: it lies beside a depth
   // edge. false: no marked return votes (until 39).
