@@ -89,6 +89,7 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(sm.head_on_deg, dm.head_on_deg);
   EXPECT_EQ(sm.head_on_through_beams, dm.head_on_through_beams);
   EXPECT_EQ(sm.specular_lifetime, dm.specular_lifetime);
+  EXPECT_EQ(sm.sparse_lifetime, dm.sparse_lifetime);
   EXPECT_EQ(sm.specular_confirm_distance, dm.specular_confirm_distance);
   EXPECT_EQ(sm.drift_margin_per_m, dm.drift_margin_per_m);
   EXPECT_EQ(sm.drift_margin_deg_per_m, dm.drift_margin_deg_per_m);
@@ -140,10 +141,12 @@ TEST(FilterConfig, PaperLiteralPresetLoads) {
 TEST(FilterConfig, ReadsThePaneAndMirrorMemoryKeys) {
   const FilterConfig c = parseFilterConfig(
       "penetration_filter:\n  surface_memory:\n    specular_lifetime: 120\n    specular_confirm_distance: 0.2\n"
-      "    drift_margin_per_m: 0.01\n    drift_margin_deg_per_m: 0.5\n",
+      "    drift_margin_per_m: 0.01\n    drift_margin_deg_per_m: 0.5\n    sparse_lifetime: 7.5\n",
       "f.yaml");
   const SurfaceMemoryParams& m = c.params.penetration.surface_memory;
   EXPECT_EQ(m.specular_lifetime, 120.0);
+  EXPECT_EQ(m.sparse_lifetime, 7.5);
+  EXPECT_NE(SurfaceMemoryParams{}.sparse_lifetime, 7.5);
   EXPECT_EQ(m.specular_confirm_distance, 0.2);
   EXPECT_EQ(m.drift_margin_per_m, 0.01);
   EXPECT_EQ(m.drift_margin_deg_per_m, 0.5);
@@ -281,6 +284,9 @@ TEST(FilterConfigErrors, NameFileLineAndKey) {
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    specular_lifetime: -1\n"),
             "f.yaml:3: penetration_filter.surface_memory.specular_lifetime: expected a value >= 0 (s; at most "
             "lifetime: panes and mirrors live as long as any surface)");
+  EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    sparse_lifetime: -2\n"),
+            "f.yaml:3: penetration_filter.surface_memory.sparse_lifetime: expected a value >= 0 (s; lifetime: as "
+            "long as a surface a frame saw, as before Beyond the paper 40)");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    drift_margin_deg_per_m: 50\n"),
             "f.yaml:3: penetration_filter.surface_memory.drift_margin_deg_per_m: expected 0 <= value <= 45 (degrees "
             "per m driven; 0: off)");

@@ -468,6 +468,7 @@ SurfaceMemoryParams panesRememberedLonger() {
   SurfaceMemoryParams params;
   params.lifetime = 5.0;
   params.specular_lifetime = 60.0;
+  params.sparse_lifetime = params.lifetime;  // unconfirmed lines as any surface (40 has its own test)
   return params;
 }
 
@@ -490,6 +491,29 @@ TEST(SurfaceMemory, ASparseLineSeenOnlyHeadOnIsAPaneAndOutlivesTheLifetime) {
   EXPECT_TRUE(memory.liesBeyondASurface(kOrigin, {0.0, 2.0}, at(30.0)));
   memory.forget(kOrigin, at(61.0));
   EXPECT_EQ(memory.size(), 0u) << "a pane expires after specular_lifetime";
+}
+
+TEST(SurfaceMemory, ASparseLineNoFrameConfirmedLivesTheSparseLifetime) {
+  // Beyond the paper 40: a line of single cached returns is no surer than
+  // the cache; a thin leg's mixed returns line up too.
+  SurfaceMemoryParams params = panesRememberedLonger();
+  params.sparse_lifetime = 2.0;
+  SurfaceMemory unconfirmed = memoryOfASparseLine(params);
+  unconfirmed.forget(kOrigin, at(1.5));
+  EXPECT_TRUE(unconfirmed.liesBeyondASurface(kOrigin, {0.0, 2.0}, at(1.5)));
+  unconfirmed.forget(kOrigin, at(2.5));
+  EXPECT_EQ(unconfirmed.size(), 0u) << "gone after sparse_lifetime, not lifetime (5 s)";
+  EXPECT_FALSE(unconfirmed.liesBeyondASurface(kOrigin, {0.0, 2.0}, at(2.5)));
+  // Confirmed as a pane, it lives specular_lifetime.
+  SurfaceMemory pane = memoryOfASparseLine(params);
+  const auto head_on = aFrameFacing({0.0});
+  pane.confirmPanesAndMirrors(head_on, usableReturns(head_on), kOrigin);
+  pane.forget(kOrigin, at(30.0));
+  EXPECT_EQ(pane.size(), 1u);
+  // A wall a frame saw as a straight run lives the lifetime.
+  SurfaceMemory wall = memoryOfAWall(params);
+  wall.forget(kOrigin, at(4.0));
+  EXPECT_EQ(wall.size(), 1u);
 }
 
 TEST(SurfaceMemory, TheLobeWidensWithDistance) {

@@ -120,6 +120,7 @@ void readSurfaceMemory(const YamlSection& parent, SurfaceMemoryParams& m, double
   s.read("head_on_deg", m.head_on_deg);
   s.read("head_on_through_beams", m.head_on_through_beams);
   s.read("specular_lifetime", m.specular_lifetime);
+  s.read("sparse_lifetime", m.sparse_lifetime);
   s.read("specular_confirm_distance", m.specular_confirm_distance);
   s.read("specular_min_pass_share", m.specular_min_pass_share);
   s.read("drift_margin_per_m", m.drift_margin_per_m);
@@ -149,6 +150,8 @@ void readSurfaceMemory(const YamlSection& parent, SurfaceMemoryParams& m, double
   s.requireRange("head_on_through_beams", m.head_on_through_beams, 0, 1e6, "an integer >= 0 (0: never forget so)");
   s.requireRange("specular_lifetime", m.specular_lifetime, 0.0, 1e6,
                  "a value >= 0 (s; at most lifetime: panes and mirrors live as long as any surface)");
+  s.requireRange("sparse_lifetime", m.sparse_lifetime, 0.0, 1e6,
+                 "a value >= 0 (s; lifetime: as long as a surface a frame saw, as before Beyond the paper 40)");
   s.requireRange("specular_confirm_distance", m.specular_confirm_distance, 1e-3, 1.0, "0.001 <= value <= 1 (m)");
   s.requireRange("specular_min_pass_share", m.specular_min_pass_share, 0.0, 1.0,
                  "0 <= value <= 1 (1: no beam off the lobe may return on it)");

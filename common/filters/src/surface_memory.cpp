@@ -28,7 +28,11 @@ void SurfaceMemory::clear() {
 double SurfaceMemory::lifetimeOf(const Segment& s) const {
   // Never shorter than lifetime: with specular_lifetime at most that, no
   // segment is confirmed (confirmPanesAndMirrors).
-  return s.pane_or_mirror ? params_.specular_lifetime : params_.lifetime;
+  if (s.pane_or_mirror) return params_.specular_lifetime;
+  // Found in the cache (a line of single returns) and not confirmed: no
+  // surer than the cache it was found in, and a thin leg's mixed returns
+  // line up too (Beyond the paper 40).
+  return s.sparse ? params_.sparse_lifetime : params_.lifetime;
 }
 
 void SurfaceMemory::forget(const Eigen::Vector2d& origin, Stamp now) {

@@ -32,6 +32,9 @@ struct SurfaceMemoryParams {
   int head_on_through_beams = 2;            // beams seen through it there, none on it: it is gone; 0: never
   // Panes and mirrors remembered longer (Beyond the paper 34).
   double specular_lifetime = 120.0;         // s a confirmed pane or mirror is remembered; <= lifetime: lifetime
+  // A sparse surface no frame confirmed as a pane or a mirror outlives the
+  // cache it was found in by little (Beyond the paper 40).
+  double sparse_lifetime = 4.0;             // s an unconfirmed sparse surface is remembered
   double specular_confirm_distance = 0.10;  // m, a return this near a segment's line lies on it when confirming
   double specular_min_pass_share = 0.5;     // of the beams meeting it off the lobe, the share that must pass
   double drift_margin_per_m = 0.01;         // m of a pane's surface margin per m driven since it was seen
