@@ -9,27 +9,9 @@
 set -euo pipefail
 BUILD="$1" SRC="$2" CASE="$3"
 source "$(dirname "$0")/../lib/dds_test_workspace.sh"  # private network namespace, DOMAIN, WORK, PIDS, cleanup
-fail() {
-  echo "FAIL: $*"
-  for f in "$WORK"/*.log "$WORK"/*/*.log; do
-    if [ -f "$f" ]; then echo "--- $f"; tail -n 20 "$f"; fi
-  done
-  exit 1
-}
+source "$(dirname "$0")/../lib/service_checks.sh"  # scrape, metric, matched, wait_matched, fail
 SF="$BUILD/tools/scanfilter"
 FRAMES=300
-
-# Output is captured before it is searched: under pipefail, piping curl into
-# a grep that quits at its first match fails at random (curl gets SIGPIPE).
-scrape() {  # port: the service's metrics page, empty if it does not answer
-  curl -s --max-time 2 "http://127.0.0.1:$1/metrics" || true
-}
-
-metric() {  # port name-and-labels-regex: prints the value
-  local page
-  page=$(scrape "$1")
-  { grep -E "^$2 " <<<"$page" | awk '{print int($2)}'; } || true
-}
 
 start_filters() {
   "$BUILD/services/penetration_filter" --domain "$DOMAIN" --metrics-address 127.0.0.1:19473 > "$WORK/penetration.log" 2>&1 &
@@ -97,23 +79,6 @@ prom_query() {  # PromQL: prints "value" of each series, one per line
   local reply
   reply=$(prom_api "$1")
   { grep -o '"value":\[[^]]*\]' <<<"$reply" | sed 's/.*,"\(.*\)"\]/\1/'; } || true
-}
-
-matched() {  # port endpoint topic: the service's gauge of peers matched by that endpoint (updated every second)
-  local page
-  page=$(scrape "$1")
-  awk -v ep="endpoint=\"$2\"" -v topic="topic=\"$3\"" \
-    'index($0, "scanfilter_dds_matched{") == 1 && index($0, ep) && index($0, topic) {print int($2)}' <<<"$page"
-}
-
-wait_matched() {  # port endpoint topic: until that endpoint has matched a peer; 20 s at most
-  local deadline=$((SECONDS + 20)) n
-  while :; do
-    n=$(matched "$1" "$2" "$3")
-    [ "${n:-0}" -ge 1 ] && return 0
-    [ "$SECONDS" -lt "$deadline" ] || fail "the $2 of $3 on :$1 matched nothing within 20 s (gauge: ${n:-absent})"
-    sleep 0.1
-  done
 }
 
 # Discovery is asymmetric: a writer may see its reader matched before the

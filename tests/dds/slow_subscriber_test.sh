@@ -37,27 +37,14 @@ MAX_CPU_RATIO=1.5
 # or a map per 20 ms kept for the stalled reader would be several MB.
 MAX_GROWTH_MB=2
 source "$(dirname "$0")/../lib/dds_test_workspace.sh"  # private network namespace, DOMAIN, WORK, PIDS, cleanup
-source "$(dirname "$0")/../lib/service_checks.sh"  # scrape, matched, fail
+source "$(dirname "$0")/../lib/service_checks.sh"  # scrape, metric, matched, wait_matched, fail
 fail() {
   echo "FAIL: $*"
   for f in "$WORK"/*.log; do [ -f "$f" ] && { echo "--- $f"; tail -n 10 "$f"; }; done
   exit 1
 }
 PROFILES="$SRC/deploy/fastdds-loopback.xml"
-metric() {  # port regex
-  local page
-  page=$(scrape "$1")
-  awk -v re="^$2 " '$0 ~ re {print int($2); exit}' <<<"$page"
-}
-wait_matched() {  # port endpoint topic peers
-  local deadline=$((SECONDS + 30)) n
-  while :; do
-    n=$(matched "$1" "$2" "$3")
-    [ "${n:-0}" -ge "$4" ] && return 0
-    [ "$SECONDS" -lt "$deadline" ] || fail "the $2 of $3 on :$1 matched ${n:-no} peers of $4 within 30 s"
-    sleep 0.1
-  done
-}
+MATCH_WAIT_S=30  # wait_matched
 # CPU seconds so far of the three services together (utime + stime).
 services_cpu_s() {
   local ticks=0 name pid_var

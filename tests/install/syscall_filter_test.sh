@@ -29,9 +29,9 @@ cleanup() {
   rm -rf "$WORK"
 }
 trap cleanup EXIT
-source "$(dirname "$0")/../lib/service_checks.sh"  # scrape, matched, fail
+source "$(dirname "$0")/../lib/service_checks.sh"  # scrape, matched, wait_matched, fail
 # Bound on waiting for discovery (strace slows everything down).
-MATCH_TIMEOUT_S=60
+MATCH_WAIT_S=60
 
 # The system calls of a filter's entries (@groups expanded, recursively).
 expand_filter() {  # entries...
@@ -87,16 +87,6 @@ traced() {  # name binary args...: runs it under strace in the background (PID_O
   TRACER_OF[$name]=$tracer
 }
 
-wait_matched() {  # port endpoint topic
-  local deadline=$((SECONDS + MATCH_TIMEOUT_S)) n
-  while :; do
-    n=$(matched "$1" "$2" "$3")
-    [ "${n:-0}" -ge 1 ] && return 0
-    [ "$SECONDS" -lt "$deadline" ] || fail "the $2 of $3 on :$1 matched nothing within $MATCH_TIMEOUT_S s"
-    sleep 0.2
-  done
-}
-
 # The notify socket and watchdog the units give them, so that sd_notify's
 # calls are traced too: a listener that reads and drops the messages.
 export NOTIFY_SOCKET="$WORK/notify.sock" WATCHDOG_USEC=2000000
@@ -114,7 +104,7 @@ YAML
 cat > "$WORK/ingest.yaml" <<YAML
 service: {domain_id: $DOMAIN, profiles_file: $PROFILES, metrics_address: 127.0.0.1:19471}
 source: {kind: log, path: $WORK/in.scanlog.jsonl, rate: max}
-playback: {wait_for_subscribers: 1, wait_timeout_s: $MATCH_TIMEOUT_S, exit_at_end: true}
+playback: {wait_for_subscribers: 1, wait_timeout_s: $MATCH_WAIT_S, exit_at_end: true}
 YAML
 traced map_publisher "$BUILD/services/map_publisher" --config "$WORK/map.yaml"
 traced penetration_filter "$BUILD/services/penetration_filter" --domain "$DOMAIN" --metrics-address 127.0.0.1:19473
@@ -125,9 +115,9 @@ wait_matched 19473 writer rt/labeled_scan
 wait_matched 19474 reader rt/labeled_scan
 traced scan_ingest "$BUILD/services/scan_ingest" --config "$WORK/ingest.yaml"
 wait "${TRACER_OF[scan_ingest]}" || fail "scan_ingest exited non-zero"
-deadline=$((SECONDS + MATCH_TIMEOUT_S))
+deadline=$((SECONDS + MATCH_WAIT_S))
 until [ -s "$WORK/map.pgm" ]; do
-  [ "$SECONDS" -lt "$deadline" ] || fail "the map publisher saved no map within $MATCH_TIMEOUT_S s"
+  [ "$SECONDS" -lt "$deadline" ] || fail "the map publisher saved no map within $MATCH_WAIT_S s"
   sleep 0.2
 done
 for name in jump_filter penetration_filter map_publisher; do

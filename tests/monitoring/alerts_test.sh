@@ -23,6 +23,7 @@
 set -euo pipefail
 BUILD="$1" SRC="$2"
 source "$(dirname "$0")/../lib/dds_test_workspace.sh"  # private network namespace, DOMAIN, WORK, PIDS, cleanup
+source "$(dirname "$0")/../lib/service_checks.sh"  # matched, wait_matched (its fail is replaced below)
 PROM_URL=http://127.0.0.1:19090
 fail() {
   {
@@ -42,6 +43,7 @@ ALERT_FOR_S=${ALERT_FOR_S:-1}
 # alerts here need one scrape, one evaluation and their `for`; a loaded
 # 2-core machine gets 10x that.
 WAIT_S=$((30 + ALERT_FOR_S))
+MATCH_WAIT_S=$WAIT_S  # wait_matched
 STREAM_HZ=20        # scans per second of the robot driver (ros_scan_publisher)
 STREAM_FRAMES=2400  # at most 2 min of scans: the stream is stopped well before
 SHIPPED_RULES="$SRC/deploy/monitoring/alerts.yml"
@@ -131,23 +133,6 @@ wait_query() {
     [ "$got" = "$2" ] && return 0
     [ "$SECONDS" -lt "$deadline" ] || fail "$3: after $WAIT_S s '$1' is '${got:-nothing}', expected $2"
     sleep 0.2
-  done
-}
-
-matched() {  # port endpoint topic: the service's gauge of peers matched by that endpoint
-  local page
-  page=$(curl -s --max-time 2 "http://127.0.0.1:$1/metrics" || true)
-  awk -v ep="endpoint=\"$2\"" -v topic="topic=\"$3\"" \
-    'index($0, "scanfilter_dds_matched{") == 1 && index($0, ep) && index($0, topic) {print int($2)}' <<<"$page"
-}
-
-wait_matched() {  # port endpoint topic: until that endpoint has matched a peer
-  local deadline=$((SECONDS + WAIT_S)) n
-  while :; do
-    n=$(matched "$1" "$2" "$3")
-    [ "${n:-0}" -ge 1 ] && return 0
-    [ "$SECONDS" -lt "$deadline" ] || fail "the $2 of $3 on :$1 matched nothing within $WAIT_S s"
-    sleep 0.1
   done
 }
 

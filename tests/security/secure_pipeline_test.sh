@@ -10,7 +10,7 @@
 set -euo pipefail
 BUILD="$1" SRC="$2" CASE="$3"
 source "$(dirname "$0")/../lib/dds_test_workspace.sh"  # private network namespace, DOMAIN, WORK, PIDS, cleanup
-source "$(dirname "$0")/../lib/service_checks.sh"  # scrape, matched, fail
+source "$(dirname "$0")/../lib/service_checks.sh"  # scrape, metric, matched, wait_matched (watching WATCH), fail
 SF="$BUILD/tools/scanfilter"
 PROFILES="$SRC/deploy/fastdds-loopback.xml"
 INJECT="$BUILD/tests/security/scan_injector"
@@ -18,7 +18,7 @@ RECORD="$BUILD/dds_tools/scan_recorder"
 FRAMES=100
 # Authentication handshakes make discovery slower than without security:
 # bounds for matching and for a whole run.
-MATCH_TIMEOUT_S=40
+MATCH_WAIT_S=40
 RUN_TIMEOUT_S=120
 # How long an intruder tries: several times what matching takes on this
 # machine with security on (about 2 s), so a match would have happened; the
@@ -34,16 +34,6 @@ bash "$SRC/deploy/security/make-keystore.sh" --domain "$DOMAIN" --days 2 "$WORK/
 ENCLAVES="$WORK/keystore/enclaves/scanfilter"
 ROGUE="$WORK/rogue/enclaves/scanfilter"
 
-scrape() {  # port: the service's metrics page, empty if it does not answer
-  curl -s --max-time 2 "http://127.0.0.1:$1/metrics" || true
-}
-
-metric() {  # port name-and-labels-regex: prints the value
-  local page
-  page=$(scrape "$1")
-  { grep -E "^$2 " <<<"$page" | awk '{print int($2)}'; } || true
-}
-
 received() {  # port service: scanfilter_scans_received_total, 0 when not counted yet (the page must answer)
   local page n
   page=$(scrape "$1")
@@ -54,17 +44,6 @@ received() {  # port service: scanfilter_scans_received_total, 0 when not counte
 
 
 WATCH=()  # services that must stay up while we wait for them
-wait_matched() {  # port endpoint topic [count]: until that endpoint has matched that many peers
-  local deadline=$((SECONDS + MATCH_TIMEOUT_S)) n want=${4:-1} pid
-  while :; do
-    for pid in "${WATCH[@]}"; do kill -0 "$pid" 2>/dev/null || fail "service $pid died"; done
-    n=$(matched "$1" "$2" "$3")
-    [ "${n:-0}" -ge "$want" ] && return 0
-    [ "$SECONDS" -lt "$deadline" ] || fail "the $2 of $3 on :$1 matched ${n:-no} peers within $MATCH_TIMEOUT_S s, expected $want"
-    sleep 0.1
-  done
-}
-
 config() {  # name metrics-port enclave [extra YAML lines]: a service config on this domain
   local name=$1 port=$2 enclave=$3
   shift 3
@@ -105,7 +84,7 @@ start_recorder() {  # label enclave-or-empty count: a scan_recorder of rt/labele
 run_ingest() {  # log file: the secured ingest publishes every scan and exits
   config scan_ingest 19471 "$ENCLAVES/scan_ingest" \
     "source: {kind: log, path: $1, rate: max}" \
-    "playback: {wait_for_subscribers: 1, wait_timeout_s: $MATCH_TIMEOUT_S, exit_at_end: true}"
+    "playback: {wait_for_subscribers: 1, wait_timeout_s: $MATCH_WAIT_S, exit_at_end: true}"
   timeout -k 5 "$RUN_TIMEOUT_S" "$BUILD/services/scan_ingest" --config "$WORK/scan_ingest.yaml" > "$WORK/ingest.log" 2>&1 ||
     fail "the secured scan_ingest exited non-zero"
 }
@@ -277,10 +256,10 @@ discovery_server)
       "$BUILD/services/jump_filter" --config "$WORK/jump_plain_client.yaml" > "$WORK/ds_$how.log" 2>&1 &
     fi
     pid=$!; PIDS+=($pid)
-    deadline=$((SECONDS + MATCH_TIMEOUT_S))
+    deadline=$((SECONDS + MATCH_WAIT_S))
     until grep -qs "started:" "$WORK/ds_$how.log"; do
       kill -0 "$pid" 2>/dev/null || fail "jump_filter with a Discovery Server ($how) and no security did not start"
-      [ "$SECONDS" -lt "$deadline" ] || fail "jump_filter with a Discovery Server ($how) did not start within $MATCH_TIMEOUT_S s"
+      [ "$SECONDS" -lt "$deadline" ] || fail "jump_filter with a Discovery Server ($how) did not start within $MATCH_WAIT_S s"
       sleep 0.1
     done
     kill -TERM "$pid"; wait "$pid" || fail "jump_filter ($how, no security) exited non-zero"
@@ -288,10 +267,10 @@ discovery_server)
   # And the secured service without a Discovery Server starts.
   "$BUILD/services/jump_filter" --config "$WORK/jump_filter.yaml" > "$WORK/secured.log" 2>&1 &
   pid=$!; PIDS+=($pid)
-  deadline=$((SECONDS + MATCH_TIMEOUT_S))
+  deadline=$((SECONDS + MATCH_WAIT_S))
   until grep -qs "started:" "$WORK/secured.log"; do
     kill -0 "$pid" 2>/dev/null || fail "the secured jump_filter did not start"
-    [ "$SECONDS" -lt "$deadline" ] || fail "the secured jump_filter did not start within $MATCH_TIMEOUT_S s"
+    [ "$SECONDS" -lt "$deadline" ] || fail "the secured jump_filter did not start within $MATCH_WAIT_S s"
     sleep 0.1
   done
   kill -TERM "$pid"; wait "$pid" || fail "the secured jump_filter exited non-zero"
