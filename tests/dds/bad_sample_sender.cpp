@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
-#include <numbers>
 #include <thread>
 
 #include "scanfilter/dds/dds_participant.hpp"
@@ -14,27 +13,20 @@
 #include "scanfilter/dds/stream_qos.hpp"
 #include "scanfilter/dds/topic_names.hpp"
 #include "scanfilter/dds/typed_writer.hpp"
+#include "room_scan_message.hpp"
 #include "scanfilter_typesPubSubTypes.h"
 
 using namespace scanfilter;
 using namespace scanfilter::dds_io;
 
 namespace {
-constexpr int kBeams = 360;
+constexpr int kBeams = test::kRoomScanBeams;
 constexpr std::size_t kHugeBeams = 70000;  // above kMaxBeamsOnWire
 
+// Scan `sequence`, stamped `sequence` seconds.
 LabeledScanMsg goodScan(std::uint64_t sequence) {
-  Scan scan;
-  scan.stamp = Stamp::fromNanoseconds(static_cast<std::int64_t>(sequence) * Stamp::kNanosPerSecond);
-  scan.angle_increment = 2.0 * std::numbers::pi / kBeams;
-  scan.ranges.assign(kBeams, 2.0);
-  SensorInfo sensor;
-  sensor.range_min = 0.15;
-  sensor.range_max = 6.0;
-  LabeledScanMsg msg;
-  toMessage(scan, sensor, sequence, msg);
-  stampStage(msg, "bad_sample_sender", wallClockNow());
-  return msg;
+  const Stamp stamp = Stamp::fromNanoseconds(static_cast<std::int64_t>(sequence) * Stamp::kNanosPerSecond);
+  return test::roomScanMessage(sequence, stamp, "bad_sample_sender");
 }
 }  // namespace
 

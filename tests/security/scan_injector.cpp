@@ -14,7 +14,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <memory>
-#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -23,27 +22,19 @@
 #include "scanfilter/dds/scan_message.hpp"
 #include "scanfilter/dds/stream_qos.hpp"
 #include "scanfilter/dds/typed_writer.hpp"
+#include "room_scan_message.hpp"
 #include "scanfilter_typesPubSubTypes.h"
 
 using namespace scanfilter;
 using namespace scanfilter::dds_io;
 
 namespace {
-constexpr int kBeams = 360;
 constexpr auto kPeriod = std::chrono::milliseconds(20);  // 50 Hz: faster than any LiDAR the pipeline serves
 
+// Scan `sequence`, stamped `sequence` + 1 seconds.
 LabeledScanMsg validScan(std::uint64_t sequence) {
-  Scan scan;
-  scan.stamp = Stamp::fromNanoseconds(static_cast<std::int64_t>(sequence + 1) * Stamp::kNanosPerSecond);
-  scan.angle_increment = 2.0 * std::numbers::pi / kBeams;
-  scan.ranges.assign(kBeams, 2.0);
-  SensorInfo sensor;
-  sensor.range_min = 0.15;
-  sensor.range_max = 6.0;
-  LabeledScanMsg msg;
-  toMessage(scan, sensor, sequence, msg);
-  stampStage(msg, "scan_injector", wallClockNow());
-  return msg;
+  const Stamp stamp = Stamp::fromNanoseconds(static_cast<std::int64_t>(sequence + 1) * Stamp::kNanosPerSecond);
+  return test::roomScanMessage(sequence, stamp, "scan_injector");
 }
 
 void usage(std::FILE* out) {
