@@ -61,7 +61,8 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
     unaligned_ += !judgement.judged;
     // After judging, so that a frame's own surfaces never judge it.
     if (judgement.judged && memory_.enabled()) {
-      memory_.forgetSeenThroughHeadOn(points_, allReturns(scan), judgement.origin);
+      const BeamMask returns = allReturns(scan);
+      memory_.forgetSeenThroughHeadOn(points_, returns, judgement.origin);
       // A gap in a surface the frame sees through is bridged where the cache
       // (other frames) holds that surface: a pane's holes, not an opening.
       const SurfaceAcrossGap cache_holds = [this](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
@@ -71,7 +72,7 @@ void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
           memory_.remember(points_, keptReturns(labels), judgement.origin, scan.stamp, isFullTurn(scan), cache_holds);
       if (remembered && params_.surface_memory.sparse_surfaces.enabled)
         rememberSparseSurfaces(judgement.origin, scan.stamp);
-      memory_.confirmPanesAndMirrors(points_, allReturns(scan), judgement.origin);
+      memory_.confirmPanesAndMirrors(points_, returns, judgement.origin);
     }
   } else {
     placeFrame(scan, sensor);
