@@ -38,11 +38,6 @@ MAX_CPU_RATIO=1.5
 MAX_GROWTH_MB=2
 source "$(dirname "$0")/../lib/dds_test_workspace.sh"  # private network namespace, DOMAIN, WORK, PIDS, cleanup
 source "$(dirname "$0")/../lib/service_checks.sh"  # scrape, metric, matched, wait_matched, fail
-fail() {
-  echo "FAIL: $*"
-  for f in "$WORK"/*.log; do [ -f "$f" ] && { echo "--- $f"; tail -n 10 "$f"; }; done
-  exit 1
-}
 PROFILES="$SRC/deploy/fastdds-loopback.xml"
 MATCH_WAIT_S=30  # wait_matched
 # CPU seconds so far of the three services together (utime + stime).

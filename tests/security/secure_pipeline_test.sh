@@ -44,6 +44,19 @@ received() {  # port service: scanfilter_scans_received_total, 0 when not counte
 
 
 WATCH=()  # services that must stay up while we wait for them
+
+# pid log what: the service logs "started:" within MATCH_WAIT_S, then stops
+# cleanly on SIGTERM.
+starts_and_stops() {
+  local pid=$1 log=$2 what=$3 deadline=$((SECONDS + MATCH_WAIT_S))
+  PIDS+=("$pid")
+  until grep -qs "started:" "$log"; do
+    kill -0 "$pid" 2>/dev/null || fail "$what did not start"
+    [ "$SECONDS" -lt "$deadline" ] || fail "$what did not start within $MATCH_WAIT_S s"
+    sleep 0.1
+  done
+  kill -TERM "$pid"; wait "$pid" || fail "$what exited non-zero"
+}
 config() {  # name metrics-port enclave [extra YAML lines]: a service config on this domain
   local name=$1 port=$2 enclave=$3
   shift 3
@@ -255,25 +268,11 @@ discovery_server)
       sed "s#profiles_file: .*#profiles_file: $WORK/client-profiles.xml#" "$WORK/jump_plain.yaml" > "$WORK/jump_plain_client.yaml"
       "$BUILD/services/jump_filter" --config "$WORK/jump_plain_client.yaml" > "$WORK/ds_$how.log" 2>&1 &
     fi
-    pid=$!; PIDS+=($pid)
-    deadline=$((SECONDS + MATCH_WAIT_S))
-    until grep -qs "started:" "$WORK/ds_$how.log"; do
-      kill -0 "$pid" 2>/dev/null || fail "jump_filter with a Discovery Server ($how) and no security did not start"
-      [ "$SECONDS" -lt "$deadline" ] || fail "jump_filter with a Discovery Server ($how) did not start within $MATCH_WAIT_S s"
-      sleep 0.1
-    done
-    kill -TERM "$pid"; wait "$pid" || fail "jump_filter ($how, no security) exited non-zero"
+    starts_and_stops $! "$WORK/ds_$how.log" "jump_filter with a Discovery Server ($how) and no security"
   done
   # And the secured service without a Discovery Server starts.
   "$BUILD/services/jump_filter" --config "$WORK/jump_filter.yaml" > "$WORK/secured.log" 2>&1 &
-  pid=$!; PIDS+=($pid)
-  deadline=$((SECONDS + MATCH_WAIT_S))
-  until grep -qs "started:" "$WORK/secured.log"; do
-    kill -0 "$pid" 2>/dev/null || fail "the secured jump_filter did not start"
-    [ "$SECONDS" -lt "$deadline" ] || fail "the secured jump_filter did not start within $MATCH_WAIT_S s"
-    sleep 0.1
-  done
-  kill -TERM "$pid"; wait "$pid" || fail "the secured jump_filter exited non-zero"
+  starts_and_stops $! "$WORK/secured.log" "the secured jump_filter"
   ;;
 config)
   # A broken enclave stops the service at start (exit 2) naming the key and the file.
