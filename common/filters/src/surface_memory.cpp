@@ -26,8 +26,8 @@ void SurfaceMemory::clear() {
 }
 
 double SurfaceMemory::lifetimeOf(const Segment& s) const {
-  // Never shorter than lifetime: with specular_lifetime at most that, no
-  // segment is confirmed (confirmPanesAndMirrors).
+  // A confirmed pane or mirror never lives shorter than lifetime: with
+  // specular_lifetime at most that, none is confirmed (confirmPanesAndMirrors).
   if (s.pane_or_mirror) return params_.specular_lifetime;
   // Found in the cache (a line of single returns) and not confirmed: no
   // surer than the cache it was found in, and a thin leg's mixed returns
