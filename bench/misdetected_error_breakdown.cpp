@@ -17,8 +17,8 @@
 // returns had hit the surface there more than obs_th times at all (the
 // cells within one cell of the crossing, true poses), and how long before:
 // within 2 or 5 times T_max, earlier, or never. That bounds what a memory of
-// surfaces longer than the cache could find (docs/accuracy.md, "Where step
-// 2 loses, and what was tried").
+// surfaces longer than the cache could find
+// (docs/accuracy-investigations.md, "Where step 2 loses, and what was tried").
 //   build/bench/misdetected_error_breakdown [--seed 2] [--sensor triangulation] [--config variant.yaml]
 #include <algorithm>
 #include <cmath>

@@ -327,7 +327,7 @@ TEST(FreeSpaceCheck, ALoneReturnItMarksStillVotesInTheCache) {
 
 // Returns of other frames near the point vouch for a surface there, but one
 // alone (another viewpoint's mixed return of the same leg) is not enough at
-// the default free_space_veto_count of 2 (docs/accuracy.md, Beyond the paper 19).
+// the default free_space_veto_count of 2 (docs/beyond-the-paper.md, 19).
 TEST(FreeSpaceCheck, OneReturnFromElsewhereNearItDoesNotVetoTheCheck) {
   const PenetrationFilterParams defaults;
   ASSERT_EQ(defaults.free_space_veto_count, 2);

@@ -340,7 +340,7 @@ TEST(SurfaceMemory, ForgetsASurfaceSeenThroughHeadOn) {
 // The sensor's perpendicular meets the wall's line just past its end, and
 // head-on beams (within 5° of the normal) cross the wall inside it: the
 // wall stays. Only a surface the sensor faces is judged; counting these too
-// lost more re-observed returns on the Mines logs (docs/accuracy.md, 26).
+// lost more re-observed returns on the Mines logs (docs/beyond-the-paper.md, 26).
 TEST(SurfaceMemory, AWallSeenThroughHeadOnOnlyPastItsEndStays) {
   SurfaceMemory memory = memoryOfAWall();
   const Eigen::Vector2d near_end{1.1, -3.0};  // 4 m from y = 1: head-on beams cross x in [0.75, 1.45]

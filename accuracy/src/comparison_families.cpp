@@ -19,7 +19,7 @@ FilterFamily twoStep(const FilterConfig& ours) {
   const auto& j = ours.params.jump;
   const auto& p = ours.params.penetration;
   return {"two-step (ours)",
-          "this project: Cao et al. 2025 with the changes in docs/accuracy.md; defaults config/filter.yaml",
+          "this project: Cao et al. 2025 with the changes in docs/beyond-the-paper.md; defaults config/filter.yaml",
           {{"alpha", {j.alpha, 0.5, 0.8}},
            {"theta_k_deg", {j.theta_k_deg, 60.0, 80.0}},
            {"l_max", {j.l_max, 0.08, 0.12}},

@@ -121,7 +121,7 @@ metrics)
     grep -q "^scanfilter_processing_seconds_bucket{service=\"$name\",le=\"1e-05\"}" <<<"$page" ||
       fail "$name has no processing histogram"
   done
-  # The range-noise model step 1 judged the last scan with (accuracy.md, 18)
+  # The range-noise model step 1 judged the last scan with (beyond-the-paper.md, 18)
   # is the one the offline replay of the same scans ends with.
   offline=$("$SF" replay "$WORK/in.scanlog.jsonl" --config "$SRC/config/filter.yaml")
   offline_base=$(sed -n 's/^step 1 range noise: sigma(d) = \([0-9.]*\) mm .*/\1/p' <<<"$offline")
@@ -137,7 +137,7 @@ metrics)
   out_jump=$(echo "$info" | sed -n 's/.* jump=\([0-9]*\).*/\1/p')
   out_mis=$(echo "$info" | sed -n 's/.* misdetected=\([0-9]*\).*/\1/p')
   jump=$(metric 19472 'scanfilter_points_removed_total\{reason="jump",service="jump_filter"\}')
-  # Step 2's free-space check also marks jump points (accuracy.md, 17).
+  # Step 2's free-space check also marks jump points (beyond-the-paper.md, 17).
   free_space=$(metric 19473 'scanfilter_points_removed_total\{reason="jump",service="penetration_filter"\}')
   restored=$(metric 19473 'scanfilter_points_restored_total\{service="penetration_filter"\}')
   mis=$(metric 19473 'scanfilter_points_removed_total\{reason="misdetected",service="penetration_filter"\}')

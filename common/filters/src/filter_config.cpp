@@ -357,7 +357,7 @@ TwoStepFilterParams FilterConfig::resolve(const SensorInfo& sensor) const {
   }
   if (free_space_veto_reference_deg > 0.0) {
     // rescue_min_count is not scaled: measured, scaling it too lost more
-    // re-observed returns on the real logs (docs/accuracy.md, 26).
+    // re-observed returns on the real logs (docs/beyond-the-paper.md, 26).
     const double beams = beamsPerReferenceStep(free_space_veto_reference_deg, out.jump);
     p.free_space_veto_count = scaledCount(p.free_space_veto_count, beams, 1);
   }

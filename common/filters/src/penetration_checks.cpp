@@ -2,7 +2,7 @@
 // frame's returns after the penetration model: the rescue of step 1's jump
 // points (16, 36), the free-space check (17, 19, 39), the thin-object check
 // (25, 30-32, 38) and the surface memory with its mirror images (24, 34,
-// 35); numbers are docs/accuracy.md's "Beyond the paper" sections.
+// 35); numbers are the sections of docs/beyond-the-paper.md.
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -36,7 +36,7 @@ bool PenetrationFilter::thinObjectStandsAt(const Eigen::Vector2d& p, const Eigen
   if (!params_.rescue_persistent_points || evidenceAround(p, origin) < params_.rescue_min_count) return false;
   // Other frames' mixed returns of the same leg land near a mixed return
   // too, and most of them were removed in their own frames; a real object's
-  // returns were kept there (docs/accuracy.md, 31).
+  // returns were kept there (docs/beyond-the-paper.md, 31).
   return !params_.thin_object_evidence_kept || keptReturnsAround(p, origin) >= params_.rescue_min_count;
 }
 
@@ -170,7 +170,7 @@ bool PenetrationFilter::obstacleBehindInFootprint(const Eigen::Vector2d& origin,
   if (!(length > 0.0) || !std::isfinite(range_max)) return false;
   // An obstacle (more than obs_th returns), not the weaker cells in front:
   // with those, thin legs seen past another near the range's end were lost
-  // (docs/accuracy.md, 30).
+  // (docs/beyond-the-paper.md, 30).
   return anyCellAlongBeam(origin, (p - origin) / length, length + thin_objects_.depthStep(), range_max, angle_step,
                           CellsThatCount::kObstacles, [&](const Eigen::Vector2d& q) {
                             return thin_objects_.inFootprintBehind(origin, p, q, angle_step, range_max);

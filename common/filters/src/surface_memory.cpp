@@ -104,7 +104,7 @@ double SurfaceMemory::driftMargin(const Segment& s, double range) const {
   // drift only relative to frames of the last seconds.
   // Only a pane or a mirror lives long enough for it to matter; a wall's
   // margin growing too lost more re-observed returns on a Mines log with
-  // added drift (docs/accuracy.md, 34).
+  // added drift (docs/beyond-the-paper.md, 34).
   if (!s.pane_or_mirror) return 0.0;
   return (params_.drift_margin_per_m + drift_heading_per_m_ * range) * (path_ - s.path_when_seen);
 }
@@ -135,7 +135,7 @@ bool SurfaceMemory::seenThroughHeadOn(const Segment& s, std::span<const Eigen::V
   // Only a segment the sensor faces, the foot of its perpendicular inside
   // it. Head-on beams reach distance · tan(head_on_deg) beyond the foot, but
   // counting those past a segment's end too lost more re-observed returns on
-  // the Mines logs (docs/accuracy.md, 26). Written so that NaN skips it.
+  // the Mines logs (docs/beyond-the-paper.md, 26). Written so that NaN skips it.
   if (!s.insideEnds(s.unit.dot(origin - s.a))) return false;
   const double max_along = std::sin(degreesToRadians(params_.head_on_deg));
   int through = 0;

@@ -13,7 +13,7 @@ namespace scanfilter {
 // range with the far one, each viewpoint elsewhere; pose error), and a beam
 // passing just beside the end would seem to cross the surface, though the
 // frame shows it ending there. Step 2 counts no obstacle in the discs
-// (edge_smear_radius; docs/accuracy.md, Beyond the paper 22).
+// (edge_smear_radius; docs/beyond-the-paper.md, 22).
 class EdgeSmearZone {
  public:
   // Replaces the zone: discs of `radius` around `ends` (the non-finite

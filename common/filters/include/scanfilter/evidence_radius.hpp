@@ -22,7 +22,7 @@ struct EvidenceRadiusParams {
   RangeNoiseSampling sampling;  // how the noise is measured
 };
 
-// Beyond the paper (docs/accuracy.md, Beyond the paper 33): how far around a
+// Beyond the paper (docs/beyond-the-paper.md, 33): how far around a
 // point step 2 counts the returns that vouch for a surface there (the
 // rescue, the free-space veto, the thin-object check's spare). Returns of one
 // surface scatter along their beams by the range noise: within rescue_radius

@@ -30,7 +30,7 @@ struct FilterConfig {
   // them, fill more cells the finer the step: the sparse surfaces' support
   // (min_neighbours, min_cells) is given for this step (degrees) and scaled
   // by the square root of the sensor's beams per it (rounded): a cell counts
-  // once however many returns it holds (docs/accuracy.md, 29). 0: as given.
+  // once however many returns it holds (docs/beyond-the-paper.md, 29). 0: as given.
   double sparse_support_reference_deg = 1.0;
 
   // Parameters for one sensor, with every `auto` value filled in.

@@ -57,7 +57,7 @@ struct JumpFilterParams {
   // between the edge's range and the background's, never in front of both;
   // but the mixed return of an object thinner than a beam does stand in
   // front, so the option trades jump recall for thin obstacles kept
-  // (measured in docs/accuracy.md, Beyond the paper 11).
+  // (measured in docs/beyond-the-paper.md, 11).
   bool keep_foreground_clusters = true;
   // Beyond the paper: a lone return is kept when the beams at its range lie
   // at least l_max apart (range·Δθ >= l_max: beyond 5.7 m at 1°). There an

@@ -3,8 +3,8 @@
 namespace scanfilter {
 
 // Parameters of the mirror-image test (config/filter.yaml, penetration_filter:
-// surface_memory: mirror_ghosts, documents each; docs/accuracy.md, Beyond the
-// paper 35).
+// surface_memory: mirror_ghosts, documents each;
+// docs/beyond-the-paper.md, 35).
 struct MirrorGhostParams {
   bool enabled = true;
   double image_radius = 0.08;    // m, the image lies this near an obstacle the cache holds

@@ -50,7 +50,7 @@ struct PenetrationFilterParams {
   // Beyond the paper: a frame taken sooner than this after the last cached
   // one is judged but not cached. At 25-40 Hz the 40 cached frames would
   // span 1-1.6 s of nearly one viewpoint; every second frame spans twice
-  // that, and caching costs half (docs/accuracy.md, Beyond the paper 21).
+  // that, and caching costs half (docs/beyond-the-paper.md, 21).
   // 45 ms lies at least 5 ms from one, two or three periods of the common
   // rates (10, 12.5, 15, 20, 25, 30, 40, 50 Hz), so stamp jitter below that
   // does not change which frames are cached. 0: every frame (the paper).
@@ -64,7 +64,7 @@ struct PenetrationFilterParams {
   // return votes (the default: on the simulator it costs ghost recall).
   double edge_vote_margin_deg = 0.0;  // degrees
   double edge_depth_step = 0.15;      // m
-  // Beyond the paper (docs/accuracy.md, 22): where the judged frame sees a
+  // Beyond the paper (docs/beyond-the-paper.md, 22): where the judged frame sees a
   // surface end (a return with a neighbour farther by edge_depth_step on one
   // side and its surface running on unbroken for this distance on the
   // other), the obstacle cells within this distance of it are not evidence,
@@ -73,13 +73,13 @@ struct PenetrationFilterParams {
   // centimetres (footprints straddling it, pose error), and a beam just
   // beside the end would seem to cross the surface. 0: off (the paper).
   double edge_smear_radius = 0.15;  // m
-  // Beyond the paper (grazing_returns.hpp; docs/accuracy.md, 23): returns
+  // Beyond the paper (grazing_returns.hpp; docs/beyond-the-paper.md, 23): returns
   // whose beam meets their surface at less than this angle do not vote:
   // displaced along a surface seen at grazing incidence, they fringe it, and
   // beams running beside it seem to cross it. 0: every return votes (the
   // default: on the simulator it costs ghost recall, as 15 does).
   double grazing_vote_max_deg = 0.0;  // degrees
-  // Beyond the paper (docs/accuracy.md): step 1 deletes every cluster of one
+  // Beyond the paper (docs/beyond-the-paper.md, 1): step 1 deletes every cluster of one
   // or two beams, so a thin leg is always lost. A jump point is restored when
   // the cached frames put at least `rescue_min_count` returns in its cell:
   // persistent evidence that a jump point, which moves with the viewpoint,
@@ -144,7 +144,7 @@ struct PenetrationFilterParams {
   double free_space_margin = 0.10;  // m
   // m per m of the point's distance from the cached frame's sensor, added
   // to the margin: range noise and the pose error left after alignment both
-  // move a far return more (docs/accuracy.md, Beyond the paper 20).
+  // move a far return more (docs/beyond-the-paper.md, 20).
   double free_space_margin_per_m = 0.01;
   double free_space_dip = 0.05;     // m, a bracketing beam this much short of the outer ones does not count
   int free_space_min_frames = 1;
@@ -153,7 +153,7 @@ struct PenetrationFilterParams {
   // surface there. One was enough until it was measured: the mixed returns
   // of a thin leg, seen from other places, scatter behind it, and one of
   // them near another was vetoing the check for most of them
-  // (docs/accuracy.md, Beyond the paper 19). The count the filter uses:
+  // (docs/beyond-the-paper.md, 19). The count the filter uses:
   // config/filter.yaml gives it for 1° steps and FilterConfig::resolve
   // scales it to the sensor's.
   int free_space_veto_count = 2;
@@ -170,14 +170,14 @@ struct PenetrationFilterParams {
   // beside a beam without a return (the mix of two objects, 30), nor one
   // with a cached object in its footprint in front of it (that object's
   // mixed return: the thin-object check's test, 25): measured, more valid
-  // returns went (docs/accuracy.md, Beyond the paper 39). A lone vote is a
+  // returns went (docs/beyond-the-paper.md, 39). A lone vote is a
   // vote like a kept return's, also for the thin-object check's kept
   // returns (31; kept out of them, measured, more valid returns went). With
   // edge_vote_margin_deg > 0 no lone return votes: it lies beside a depth
   // edge. false: no marked return votes (until 39).
   bool free_space_lone_returns_vote = true;
-  // Beyond the paper (thin_object_check.hpp; docs/accuracy.md, Beyond the
-  // paper 25): a kept return in a stretch of at most thin_object_max_beams
+  // Beyond the paper (thin_object_check.hpp;
+  // docs/beyond-the-paper.md, 25): a kept return in a stretch of at most thin_object_max_beams
   // returns standing in front of both sides (by thin_object_depth_step; the
   // object's own returns and its mixed ones beside them) becomes a jump point
   // when a cell holding thin_object_min_returns cached returns lies on its

@@ -10,7 +10,7 @@
 namespace scanfilter {
 
 // How a straight surface is found among cells that each hold only a few
-// returns (docs/accuracy.md, Beyond the paper 29). config/filter.yaml gives
+// returns (docs/beyond-the-paper.md, 29). config/filter.yaml gives
 // min_neighbours and min_cells for a 1° step; FilterConfig::resolve scales
 // them to the sensor's.
 struct SparseSurfaceParams {

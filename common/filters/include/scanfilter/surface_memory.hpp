@@ -17,7 +17,7 @@
 namespace scanfilter {
 
 // Parameters of the surface memory (config/filter.yaml, penetration_filter:
-// surface_memory, documents each; docs/accuracy.md, Beyond the paper 24).
+// surface_memory, documents each; docs/beyond-the-paper.md, 24).
 struct SurfaceMemoryParams {
   double lifetime = 20.0;                   // s a stretch of surface not seen again is remembered; 0: off
   double min_interval = 0.25;               // s between frames whose surfaces are remembered
@@ -52,8 +52,8 @@ struct SurfaceMemoryParams {
 // Beyond the paper: the flat surfaces that judged frames saw well, remembered
 // longer than step 2's cache. Mirrors and panes return directly only near
 // normal incidence, so the cache often no longer holds the one in front of a
-// ghost; a segment does not thicken as cells do (docs/accuracy.md, "Where
-// step 2 loses"). A kept return that lies beyond a remembered segment, on
+// ghost; a segment does not thicken as cells do
+// (docs/accuracy-investigations.md, "Where step 2 loses"). A kept return that lies beyond a remembered segment, on
 // the far side of its line from the sensor by more than the margin, with the
 // beam crossing the segment inside its ends, was seen through a surface.
 //
@@ -107,8 +107,8 @@ class SurfaceMemory {
   // confirms nothing), where a row of chair legs returns most of them; a
   // glossy surface returns some at any angle (Beyond the paper 35). A
   // confirmed one is remembered specular_lifetime, and stays confirmed:
-  // what merges with it on its line is that surface (docs/accuracy.md,
-  // Beyond the paper 34).
+  // what merges with it on its line is that surface
+  // (docs/beyond-the-paper.md, 34).
   // `returns`: every beam with a return. A no-op with the rule off.
   void confirmPanesAndMirrors(std::span<const Eigen::Vector2d> points, const BeamMask& returns,
                               const Eigen::Vector2d& origin);

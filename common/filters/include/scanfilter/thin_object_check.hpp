@@ -10,7 +10,7 @@
 
 namespace scanfilter {
 
-// Beyond the paper (docs/accuracy.md, Beyond the paper 25): the mixed return
+// Beyond the paper (docs/beyond-the-paper.md, 25): the mixed return
 // of an object thinner than the beam's footprint, a chair or table leg. The
 // footprint falls partly on the object and partly on the background behind
 // it, and the sensor reports a range between the two: beside the object's
