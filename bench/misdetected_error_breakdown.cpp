@@ -19,6 +19,9 @@
 // within 2 or 5 times T_max, earlier, or never. That bounds what a memory of
 // surfaces longer than the cache could find
 // (docs/accuracy-investigations.md, "Where step 2 loses, and what was tried").
+// And by what the surface memory (Beyond the paper 24) held there when the
+// frame was judged: a live segment confirmed as a pane or mirror, a live
+// one not confirmed, only segments past their lifetime, or nothing.
 //   build/bench/misdetected_error_breakdown [--seed 2] [--sensor triangulation] [--config variant.yaml]
 #include <algorithm>
 #include <cmath>
@@ -74,9 +77,23 @@ SeenBefore seenBefore(const bench::SurfaceHistory& history, const Eigen::Vector2
   return kNever;
 }
 
+// What the surface memory held within kMemoryRadius of the crossing.
+enum MemoryHeld { kLiveConfirmed, kLiveUnconfirmed, kExpired, kNothing, kMemoryHeld };
+constexpr const char* kMemoryHeldNames[kMemoryHeld] = {"live, pane or mirror", "live, not confirmed",
+                                                       "past its lifetime", "nothing"};
+constexpr double kMemoryRadius = 0.10;  // m: two cells, the crossing's own and its neighbour's
+
+MemoryHeld memoryHeld(const SurfaceMemory& memory, const Eigen::Vector2d& p, Stamp now) {
+  const auto held = memory.heldNear(p, now, kMemoryRadius);
+  if (!held) return kNothing;
+  if (!held->alive) return kExpired;
+  return held->pane_or_mirror ? kLiveConfirmed : kLiveUnconfirmed;
+}
+
 struct Counts {
   long by_reason[kReasons] = {};
   long unseen_by_when[kSeenBefore] = {};
+  long unseen_by_memory[kMemoryHeld] = {};
   long total() const {
     long n = 0;
     for (long c : by_reason) n += c;
@@ -108,6 +125,7 @@ Counts breakdown(const std::string& scene_name, const std::string& sensor, std::
     std::vector<int> near_surface(scan.size(), -1);
     std::vector<double> behind(scan.size(), 0.0);
     std::vector<SeenBefore> seen(scan.size(), kNever);
+    std::vector<MemoryHeld> held(scan.size(), kNothing);
     for (std::size_t i = 0; i < scan.size(); ++i) {
       if (scan.truth[i] != static_cast<std::uint8_t>(PointCode::kMisdetected)) continue;
       const double a = beamWorldAngle(scan, info, i);
@@ -115,6 +133,7 @@ Counts breakdown(const std::string& scene_name, const std::string& sensor, std::
       if (!hit) continue;
       near_surface[i] = cachedReturnsNear(filter.penetration().grid(), hit->point);
       seen[i] = seenBefore(history, hit->point, t, pen);
+      held[i] = memoryHeld(filter.penetration().surfaceMemory(), hit->point, scan.stamp);
       behind[i] = scan.ranges[i] - hit->range;
     }
     const std::size_t unaligned_before = filter.penetration().unalignedFrames();
@@ -131,6 +150,7 @@ Counts breakdown(const std::string& scene_name, const std::string& sensor, std::
       else if (near_surface[i] <= pen.obstacle_threshold) {
         r = kSurfaceUnseen;
         ++counts.unseen_by_when[seen[i]];
+        ++counts.unseen_by_memory[held[i]];
       }
       else if (behind[i] < pen.own_surface_margin + pen.own_surface_margin_per_m * scan.ranges[i]) r = kJustBehind;
       ++counts.by_reason[r];
@@ -182,6 +202,18 @@ int main(int argc, char** argv) {
     const long unseen = c.by_reason[kSurfaceUnseen];
     std::printf("| %s | %ld |", name.c_str(), unseen);
     for (long n : c.unseen_by_when) std::printf(" %ld (%.0f %%) |", n, unseen > 0 ? 100.0 * n / unseen : 0.0);
+    std::printf("\n");
+  }
+  std::printf("\nsurface unseen: what the surface memory held within %.2f m of the crossing\n\n", kMemoryRadius);
+  std::printf("| scene | surface unseen |");
+  for (const char* name : kMemoryHeldNames) std::printf(" %s |", name);
+  std::printf("\n|---|---|");
+  for (int m = 0; m < kMemoryHeld; ++m) std::printf("---|");
+  std::printf("\n");
+  for (const auto& [name, c] : scenes) {
+    const long unseen = c.by_reason[kSurfaceUnseen];
+    std::printf("| %s | %ld |", name.c_str(), unseen);
+    for (long n : c.unseen_by_memory) std::printf(" %ld (%.0f %%) |", n, unseen > 0 ? 100.0 * n / unseen : 0.0);
     std::printf("\n");
   }
   return 0;

@@ -1,6 +1,7 @@
 #include "scanfilter/surface_memory.hpp"
 
 #include <algorithm>
+#include <utility>
 #include <cmath>
 
 #include "scanfilter/scan_geometry.hpp"
@@ -87,6 +88,19 @@ bool SurfaceMemory::beamPassesThrough(const Segment& s, const Eigen::Vector2d& o
   if (std::abs(s.normal.dot(p - s.a)) < surface_margin) return false;
   const std::optional<double> along = s.crossingAlong(origin, p);
   return along && s.insideEnds(*along);
+}
+
+std::optional<SurfaceMemory::Held> SurfaceMemory::heldNear(const Eigen::Vector2d& p, Stamp now,
+                                                           double radius) const {
+  std::optional<Held> held;
+  for (const Segment& s : segments_) {
+    const double along = s.unit.dot(p - s.a);
+    if (along < 0.0 || along > s.length || std::abs(s.normal.dot(p - s.a)) > radius) continue;
+    const Held h{alive(s, now), s.pane_or_mirror};
+    // A live segment says more than a dead one, a confirmed one more than not.
+    if (!held || std::pair(h.alive, h.pane_or_mirror) > std::pair(held->alive, held->pane_or_mirror)) held = h;
+  }
+  return held;
 }
 
 double SurfaceMemory::surfaceMargin(double range) const {

@@ -62,6 +62,7 @@ class PenetrationFilter {
   void reset();
 
   const PenetrationGrid& grid() const { return grid_; }
+  const SurfaceMemory& surfaceMemory() const { return memory_; }
   // The returns the rescue counts (rescue_persistent_points).
   const PenetrationGrid& rescueEvidence() const { return evidence_; }
   // The range noise measured for the evidence radius (zero until measured).

@@ -134,6 +134,14 @@ class SurfaceMemory {
                         double min_beam_surface_angle_deg);
   std::size_t size() const { return segments_.size(); }
 
+  // For breakdowns (bench/misdetected_error_breakdown): what the memory
+  // holds within `radius` of p, on a segment's stretch, at `now`.
+  struct Held {
+    bool alive = false;           // seen within its lifetime
+    bool pane_or_mirror = false;  // confirmed (of the live ones, if any)
+  };
+  std::optional<Held> heldNear(const Eigen::Vector2d& p, Stamp now, double radius) const;
+
  private:
   struct Segment {
     Eigen::Vector2d a;
