@@ -37,8 +37,9 @@ struct SurfaceMemoryParams {
   double sparse_lifetime = 4.0;             // s an unconfirmed sparse surface is remembered
   double specular_confirm_distance = 0.10;  // m, a return this near a segment's line lies on it when confirming
   double specular_min_pass_share = 0.5;     // of the beams meeting it off the lobe, the share that must pass
-  double drift_margin_per_m = 0.01;         // m of a pane's surface margin per m driven since it was seen
-  double drift_margin_deg_per_m = 0.5;      // ... and this heading drift per m driven, times the return's range
+  // The aligned frames' drift, not the raw odometry's (Beyond the paper 41).
+  double drift_margin_per_m = 0.005;        // m of a pane's surface margin per m driven since it was seen
+  double drift_margin_deg_per_m = 0.25;     // ... and this heading drift per m driven, times the return's range
   // Ghosts found as mirror images of what the cache holds (Beyond the paper
   // 35): configured here, beside the panes and mirrors it needs; read by
   // the penetration filter's MirrorGhostCheck.
