@@ -25,6 +25,7 @@
 //   build/bench/misdetected_error_breakdown [--seed 2] [--sensor triangulation] [--config variant.yaml]
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <optional>
@@ -164,6 +165,24 @@ Counts breakdown(const std::string& scene_name, const std::string& sensor, std::
   return counts;
 }
 
+// One table per scene of how its surface-unseen returns split: `names` the
+// columns, `split` the counts in the same order.
+template <std::size_t N>
+void printUnseenSplit(const std::vector<std::pair<std::string, Counts>>& scenes, const char* const (&names)[N],
+                      long (Counts::*split)[N]) {
+  std::printf("| scene | surface unseen |");
+  for (const char* name : names) std::printf(" %s |", name);
+  std::printf("\n|---|---|");
+  for (std::size_t k = 0; k < N; ++k) std::printf("---|");
+  std::printf("\n");
+  for (const auto& [name, c] : scenes) {
+    const long unseen = c.by_reason[kSurfaceUnseen];
+    std::printf("| %s | %ld |", name.c_str(), unseen);
+    for (long n : c.*split) std::printf(" %ld (%.0f %%) |", n, unseen > 0 ? 100.0 * n / unseen : 0.0);
+    std::printf("\n");
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -193,28 +212,8 @@ int main(int argc, char** argv) {
     scenes.emplace_back(name, c);
   }
   std::printf("\nsurface unseen: when the run's valid returns had hit that surface more than obs_th times\n\n");
-  std::printf("| scene | surface unseen |");
-  for (const char* name : kSeenBeforeNames) std::printf(" %s |", name);
-  std::printf("\n|---|---|");
-  for (int w = 0; w < kSeenBefore; ++w) std::printf("---|");
-  std::printf("\n");
-  for (const auto& [name, c] : scenes) {
-    const long unseen = c.by_reason[kSurfaceUnseen];
-    std::printf("| %s | %ld |", name.c_str(), unseen);
-    for (long n : c.unseen_by_when) std::printf(" %ld (%.0f %%) |", n, unseen > 0 ? 100.0 * n / unseen : 0.0);
-    std::printf("\n");
-  }
+  printUnseenSplit(scenes, kSeenBeforeNames, &Counts::unseen_by_when);
   std::printf("\nsurface unseen: what the surface memory held within %.2f m of the crossing\n\n", kMemoryRadius);
-  std::printf("| scene | surface unseen |");
-  for (const char* name : kMemoryHeldNames) std::printf(" %s |", name);
-  std::printf("\n|---|---|");
-  for (int m = 0; m < kMemoryHeld; ++m) std::printf("---|");
-  std::printf("\n");
-  for (const auto& [name, c] : scenes) {
-    const long unseen = c.by_reason[kSurfaceUnseen];
-    std::printf("| %s | %ld |", name.c_str(), unseen);
-    for (long n : c.unseen_by_memory) std::printf(" %ld (%.0f %%) |", n, unseen > 0 ? 100.0 * n / unseen : 0.0);
-    std::printf("\n");
-  }
+  printUnseenSplit(scenes, kMemoryHeldNames, &Counts::unseen_by_memory);
   return 0;
 }
