@@ -117,6 +117,23 @@ TEST(SurfaceMemory, AReturnBeyondARememberedSurfaceWasSeenThroughIt) {
   EXPECT_FALSE(memory.liesBeyondASurface({0.0, 2.0}, {0.0, 1.5}, at(1.0)));
 }
 
+// What bench/misdetected_error_breakdown asks: what the memory holds near a
+// point, live or past its lifetime (judging ignores those before forget()).
+TEST(SurfaceMemory, SaysWhatItHoldsNearAPoint) {
+  SurfaceMemoryParams params;
+  params.lifetime = 5.0;
+  const SurfaceMemory memory = memoryOfAWall(params);
+  const auto on_it = memory.heldNear({0.0, 1.03}, at(1.0), 0.05);
+  ASSERT_TRUE(on_it);
+  EXPECT_TRUE(on_it->alive);
+  EXPECT_FALSE(on_it->pane_or_mirror);  // a wall seen as a straight run, never confirmed
+  EXPECT_FALSE(memory.heldNear({0.0, 1.2}, at(1.0), 0.05));   // off its line
+  EXPECT_FALSE(memory.heldNear({1.5, 1.0}, at(1.0), 0.05));   // past its end
+  const auto expired = memory.heldNear({0.0, 1.0}, at(6.0), 0.05);
+  ASSERT_TRUE(expired);
+  EXPECT_FALSE(expired->alive);
+}
+
 TEST(SurfaceMemory, ForgetsWhatItDidNotSeeAgainWithinItsLifetime) {
   SurfaceMemoryParams params;
   params.lifetime = 5.0;

@@ -54,9 +54,10 @@ struct SurfaceMemoryParams {
 // longer than step 2's cache. Mirrors and panes return directly only near
 // normal incidence, so the cache often no longer holds the one in front of a
 // ghost; a segment does not thicken as cells do
-// (docs/accuracy-investigations.md, "Where step 2 loses"). A kept return that lies beyond a remembered segment, on
-// the far side of its line from the sensor by more than the margin, with the
-// beam crossing the segment inside its ends, was seen through a surface.
+// (docs/accuracy-investigations.md, "Where step 2 loses"). A kept return
+// that lies beyond a remembered segment, on the far side of its line from
+// the sensor by more than the margin, with the beam crossing the segment
+// inside its ends, was seen through a surface.
 //
 // What is remembered: segments of the kept returns that the beam to their
 // middle meets at `min_beam_surface_angle_deg` or more (no grazing walls,
