@@ -24,10 +24,12 @@ namespace {
 // Artefacts F1 is the accuracy issue's measure: both kinds as one class
 // against the valid points, whatever label a removed artefact got.
 void row(const std::string& scene, const std::string& filter, const RemovalScore& s) {
-  std::printf("| %s | %s | %.3f / %.3f / **%.3f** | %.3f / %.3f / **%.3f** | %.3f / %.3f / **%.3f** | %.2f %% | %.1f %% |\n",
-              scene.c_str(), filter.c_str(), s.jump().precision(), s.jump().recall(), s.jump().f1(),
-              s.misdetected().precision(), s.misdetected().recall(), s.misdetected().f1(), s.artefactPrecision(),
-              s.artefactRecall(), s.artefactF1(), 100 * s.falseDeletionRate(), 100 * s.thinLegRetention());
+  std::printf(
+      "| %s | %s | %.3f / %.3f / **%.3f** | %.3f / %.3f / **%.3f** | %.3f / %.3f / **%.3f** | %.2f %% | %.1f %% "
+      "|\n",
+      scene.c_str(), filter.c_str(), s.jump().precision(), s.jump().recall(), s.jump().f1(), s.misdetected().precision(),
+      s.misdetected().recall(), s.misdetected().f1(), s.artefactPrecision(), s.artefactRecall(), s.artefactF1(),
+      100 * s.falseDeletionRate(), 100 * s.thinLegRetention());
 }
 
 // Recall per artefact cause (simulator ground truth), every scene together:

@@ -42,7 +42,6 @@ received() {  # port service: scanfilter_scans_received_total, 0 when not counte
   echo "${n:-0}"
 }
 
-
 WATCH=()  # services that must stay up while we wait for them
 
 # pid log what: the service logs "started:" within MATCH_WAIT_S, then stops
