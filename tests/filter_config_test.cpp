@@ -257,81 +257,89 @@ TEST(FilterConfig, CountsOfReturnsFollowTheAngularStep) {
 
 TEST(FilterConfigErrors, NameFileLineAndKey) {
   EXPECT_EQ(errorOf("jump_filter:\n  alpha: fast\n"), "f.yaml:2: jump_filter.alpha: expected a number, got \"fast\"");
-  EXPECT_EQ(errorOf("jump_filter:\n  alpah: 1\n"), "f.yaml:2: jump_filter.alpah: unknown key");
+  EXPECT_EQ(errorOf("jump_filter:\n  alpah: 1\n"), "f.yaml:2: jump_filter.alpah: unknown key (did you mean alpha?)");
   EXPECT_EQ(errorOf("jump_filter:\n  d_max: .inf\n"),
-            "f.yaml:2: jump_filter.d_max: expected 0 <= value <= 1e4 (m), or auto");
+            "f.yaml:2: jump_filter.d_max: expected 0 <= value <= 1e4 (m), or auto, got .inf");
   EXPECT_EQ(errorOf("jump_filter:\n  d_min: -1\n"),
-            "f.yaml:2: jump_filter.d_min: expected 0 <= value <= 1e4 (m), or auto");
+            "f.yaml:2: jump_filter.d_min: expected 0 <= value <= 1e4 (m), or auto, got -1");
   EXPECT_EQ(errorOf("jump_filter:\n  theta_k_deg: 90\n"),
-            "f.yaml:2: jump_filter.theta_k_deg: expected 0 <= value < 90 (cos θK must stay positive)");
-  EXPECT_EQ(errorOf("penetration_filter:\n  min_frames: 0\n"), "f.yaml:2: penetration_filter.min_frames: expected an integer >= 1");
+            "f.yaml:2: jump_filter.theta_k_deg: expected 0 <= value < 90 (cos θK must stay positive), got 90");
+  EXPECT_EQ(errorOf("penetration_filter:\n  min_frames: 0\n"),
+            "f.yaml:2: penetration_filter.min_frames: expected an integer >= 1, got 0");
   EXPECT_EQ(errorOf("penetration:\n  x: 1\n"), "f.yaml:1: penetration: unknown section; expected jump_filter or penetration_filter");
   EXPECT_EQ(errorOf("jump_filter: [1, 2\n").substr(0, 26), "f.yaml:2: malformed YAML: ");
   EXPECT_EQ(errorOf("penetration_filter:\n  alignment:\n    max_fit_points: 10\n"),
             "f.yaml:3: penetration_filter.alignment.max_fit_points: must be 0 (every point) or at least min_matches "
             "(20): fewer points could never make a good fit");
   EXPECT_EQ(errorOf("penetration_filter:\n  free_space_min_frames: 41\n"),
-            "f.yaml:2: penetration_filter.free_space_min_frames: expected an integer from 1 to max_cache_frames");
+            "f.yaml:2: penetration_filter.free_space_min_frames: expected an integer from 1 to max_cache_frames, "
+            "got 41");
   EXPECT_EQ(errorOf("penetration_filter:\n  max_cache_frames: 60\n  free_space_min_frames: 41\n"), "no error");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    surface_margin: 0\n"),
             "f.yaml:3: penetration_filter.surface_memory.surface_margin: expected 0.001 <= value <= 10 (m; returns on "
-            "the surface must not count)");
+            "the surface must not count), got 0");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    behind_margin: 0.2\n"),
-            "f.yaml:3: penetration_filter.surface_memory.behind_margin: unknown key");
+            "f.yaml:3: penetration_filter.surface_memory.behind_margin: unknown key (not one of the 25 keys "
+            "penetration_filter.surface_memory takes)");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    head_on_deg: 0\n"),
             "f.yaml:3: penetration_filter.surface_memory.head_on_deg: expected 0 < value <= 45 (degrees off the "
-            "normal; head_on_through_beams: 0 turns the rule off)");
+            "normal; head_on_through_beams: 0 turns the rule off), got 0");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    specular_lifetime: -1\n"),
             "f.yaml:3: penetration_filter.surface_memory.specular_lifetime: expected a value >= 0 (s; at most "
-            "lifetime: panes and mirrors live as long as any surface)");
+            "lifetime: panes and mirrors live as long as any surface), got -1");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    sparse_lifetime: -2\n"),
-            "f.yaml:3: penetration_filter.surface_memory.sparse_lifetime: expected a value >= 0 (s; lifetime: as "
-            "long as a surface a frame saw, as before Beyond the paper 40)");
+            "f.yaml:3: penetration_filter.surface_memory.sparse_lifetime: expected a value >= 0 (s; lifetime: as long "
+            "as a surface a frame saw, as before Beyond the paper 40), got -2");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    drift_margin_deg_per_m: 50\n"),
             "f.yaml:3: penetration_filter.surface_memory.drift_margin_deg_per_m: expected 0 <= value <= 45 (degrees "
-            "per m driven; 0: off)");
+            "per m driven; 0: off), got 50");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    specular_min_pass_share: 1.5\n"),
             "f.yaml:3: penetration_filter.surface_memory.specular_min_pass_share: expected 0 <= value <= 1 (1: no beam "
-            "off the lobe may return on it)");
+            "off the lobe may return on it), got 1.5");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    mirror_ghosts:\n      line_spread: 0.7\n"),
             "f.yaml:4: penetration_filter.surface_memory.mirror_ghosts.line_spread: expected 0 <= value <= 2 x "
-            "line_window (m: the returns lie within line_window either side)");
+            "line_window (m: the returns lie within line_window either side), got 0.7");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    mirror_ghosts:\n      image_radius: 0\n"),
-            "f.yaml:4: penetration_filter.surface_memory.mirror_ghosts.image_radius: expected 0.001 <= value <= 1 (m)");
+            "f.yaml:4: penetration_filter.surface_memory.mirror_ghosts.image_radius: expected 0.001 <= value <= 1 (m), "
+            "got 0");
   EXPECT_EQ(errorOf("penetration_filter:\n  rescue_min_parallax_deg: 90\n"),
-            "f.yaml:2: penetration_filter.rescue_min_parallax_deg: expected 0 <= value <= 89 (degrees; 0: off)");
+            "f.yaml:2: penetration_filter.rescue_min_parallax_deg: expected 0 <= value <= 89 (degrees; 0: off), "
+            "got 90");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    mirror_ghosts:\n      radius: 0.1\n"),
-            "f.yaml:4: penetration_filter.surface_memory.mirror_ghosts.radius: unknown key");
+            "f.yaml:4: penetration_filter.surface_memory.mirror_ghosts.radius: unknown key (expected one of "
+            "crossing_band, enabled, image_radius, line_spread, line_tolerance, line_window)");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    head_on_through_beams: -1\n"),
             "f.yaml:3: penetration_filter.surface_memory.head_on_through_beams: expected an integer >= 0 (0: never "
-            "forget so)");
+            "forget so), got -1");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    max_gap: -0.1\n"),
-            "f.yaml:3: penetration_filter.surface_memory.max_gap: expected 0 <= value <= 10 (m; 0: off)");
+            "f.yaml:3: penetration_filter.surface_memory.max_gap: expected 0 <= value <= 10 (m; 0: off), got -0.1");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    max_gap: 0\n"), "no error");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    sparse_surfaces:\n      min_neighbours: 2\n"),
             "f.yaml:4: penetration_filter.surface_memory.sparse_surfaces.min_neighbours: expected an integer >= 3 (a "
-            "cell and two more make a line)");
+            "cell and two more make a line), got 2");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    sparse_surfaces:\n      max_gap: 0\n"),
-            "f.yaml:4: penetration_filter.surface_memory.sparse_surfaces.max_gap: expected 0.001 <= value <= 10 (m)");
+            "f.yaml:4: penetration_filter.surface_memory.sparse_surfaces.max_gap: expected 0.001 <= value <= 10 (m), "
+            "got 0");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    sparse_surfaces:\n      min_cels: 6\n"),
-            "f.yaml:4: penetration_filter.surface_memory.sparse_surfaces.min_cels: unknown key");
+            "f.yaml:4: penetration_filter.surface_memory.sparse_surfaces.min_cels: unknown key (did you mean "
+            "min_cells?)");
   EXPECT_EQ(errorOf("penetration_filter:\n  free_space_veto_reference_deg: -1\n"),
             "f.yaml:2: penetration_filter.free_space_veto_reference_deg: expected 0 (as given) or the angular step "
-            "free_space_veto_count is for, in degrees");
+            "free_space_veto_count is for, in degrees, got -1");
   EXPECT_EQ(errorOf("penetration_filter:\n  free_space_veto_count: 0\n"),
-            "f.yaml:2: penetration_filter.free_space_veto_count: expected an integer >= 1");
+            "f.yaml:2: penetration_filter.free_space_veto_count: expected an integer >= 1, got 0");
   EXPECT_EQ(errorOf("penetration_filter:\n  thin_object_max_beams: 0\n"),
-            "f.yaml:2: penetration_filter.thin_object_max_beams: expected an integer >= 1");
+            "f.yaml:2: penetration_filter.thin_object_max_beams: expected an integer >= 1, got 0");
   EXPECT_EQ(errorOf("penetration_filter:\n  thin_object_radius: 2\n"),
-            "f.yaml:2: penetration_filter.thin_object_radius: expected 0 <= value <= 1 (m)");
+            "f.yaml:2: penetration_filter.thin_object_radius: expected 0 <= value <= 1 (m), got 2");
   EXPECT_EQ(errorOf("penetration_filter:\n  thin_object_min_returns: 0\n"),
-            "f.yaml:2: penetration_filter.thin_object_min_returns: expected an integer >= 1");
+            "f.yaml:2: penetration_filter.thin_object_min_returns: expected an integer >= 1, got 0");
   EXPECT_EQ(errorOf("penetration_filter:\n  evidence_noise_sigmas: -1\n"),
-            "f.yaml:2: penetration_filter.evidence_noise_sigmas: expected 0 <= value <= 100 (0: off)");
+            "f.yaml:2: penetration_filter.evidence_noise_sigmas: expected 0 <= value <= 100 (0: off), got -1");
   EXPECT_EQ(errorOf("penetration_filter:\n  evidence_noise_window_scans: 0.5\n"),
-            "f.yaml:2: penetration_filter.evidence_noise_window_scans: expected 1-1e6 (scans)");
+            "f.yaml:2: penetration_filter.evidence_noise_window_scans: expected 1-1e6 (scans), got 0.5");
   EXPECT_EQ(errorOf("penetration_filter:\n  evidence_radius_max: 11\n"),
-            "f.yaml:2: penetration_filter.evidence_radius_max: expected 0 <= value <= 10 (m)");
+            "f.yaml:2: penetration_filter.evidence_radius_max: expected 0 <= value <= 10 (m), got 11");
   EXPECT_EQ(errorOf("penetration_filter:\n  rescue_radius: 0.5\n"), "no error")
       << "a rescue_radius above evidence_radius_max is the radius everywhere";
   EXPECT_EQ(errorOf("penetration_filter:\n  obstacle_at_centroid: false\n"),
@@ -344,15 +352,15 @@ TEST(FilterConfigErrors, NameFileLineAndKey) {
             "thin_object_check: false)");
   EXPECT_EQ(errorOf("penetration_filter:\n  thin_object_depth_step: 0\n  thin_object_check: false\n"), "no error");
   EXPECT_EQ(errorOf("penetration_filter:\n  thin_object_depth_step: 11\n"),
-            "f.yaml:2: penetration_filter.thin_object_depth_step: expected 0 <= value <= 10 (m)");
+            "f.yaml:2: penetration_filter.thin_object_depth_step: expected 0 <= value <= 10 (m), got 11");
   EXPECT_EQ(errorOf("penetration_filter:\n  edge_depth_step: 0\n"), "no error")
       << "the thin-object check no longer uses it";
   EXPECT_EQ(errorOf("penetration_filter:\n  cache_min_interval: -0.1\n"),
-            "f.yaml:2: penetration_filter.cache_min_interval: expected 0 <= value <= 10 (s; 0: every frame)");
+            "f.yaml:2: penetration_filter.cache_min_interval: expected 0 <= value <= 10 (s; 0: every frame), got -0.1");
   EXPECT_EQ(errorOf("penetration_filter:\n  free_space_margin_per_m: -0.01\n"),
-            "f.yaml:2: penetration_filter.free_space_margin_per_m: expected 0 <= value <= 1 (m per m)");
+            "f.yaml:2: penetration_filter.free_space_margin_per_m: expected 0 <= value <= 1 (m per m), got -0.01");
   EXPECT_EQ(errorOf("jump_filter:\n  noise_estimate_window_scans: 0\n"),
-            "f.yaml:2: jump_filter.noise_estimate_window_scans: expected 1-1e6 (scans)");
+            "f.yaml:2: jump_filter.noise_estimate_window_scans: expected 1-1e6 (scans), got 0");
 }
 
 }  // namespace

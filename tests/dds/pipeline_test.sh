@@ -305,7 +305,8 @@ config)
     code=$?
     set -e
     [ "$code" -ne 0 ] || fail "$svc accepted a broken config"
-    grep -q "service.queue_depht: unknown key" <<<"$out" || fail "$svc did not name the bad key: $out"
+    grep -q "service.queue_depht: unknown key (did you mean queue_depth?)" <<<"$out" ||
+      fail "$svc did not name the bad key and the one meant: $out"
   done
   ;;
 launcher)

@@ -111,7 +111,8 @@ TEST(DiscoverySettings, ErrorsNameFileLineKeyAndValue) {
             std::string::npos);
   EXPECT_EQ(errorOf("service:\n  discovery:\n    peers: 10.0.1.2\n"),
             "svc.yaml:3: service.discovery.peers: expected a list like [10.0.1.2]");
-  EXPECT_EQ(errorOf("service:\n  discovery:\n    peer: [10.0.1.2]\n"), "svc.yaml:3: service.discovery.peer: unknown key");
+  EXPECT_EQ(errorOf("service:\n  discovery:\n    peer: [10.0.1.2]\n"),
+            "svc.yaml:3: service.discovery.peer: unknown key (did you mean peers?)");
 }
 
 TEST(DiscoverySettings, CombinationsThatCannotWorkAreRejected) {

@@ -6,12 +6,37 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 namespace scanfilter {
 
 namespace {
 std::size_t lineOf(const YAML::Node& node) {
   return node && node.Mark().line >= 0 ? static_cast<std::size_t>(node.Mark().line) + 1 : 0;
+}
+
+// A misspelt key is this many letters (inserted, dropped, changed or two
+// swapped) from the key meant: `alpah`, `queue_dept`, `min_cels`.
+constexpr std::size_t kMaxMisspelling = 2;
+// An unknown key in a section with more keys than this names none of them:
+// the documented config file lists them better than one long line.
+constexpr std::size_t kMaxKeysListed = 12;
+
+// Letters inserted, dropped, changed or two neighbours swapped to turn `a`
+// into `b` (optimal string alignment distance).
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t change = a[i - 1] == b[j - 1] ? 0 : 1;
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + change});
+      const bool swapped = i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1];
+      if (swapped) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  }
+  return d[a.size()][b.size()];
 }
 }  // namespace
 
@@ -60,8 +85,40 @@ void YamlSection::rejectUnknownKeys() const {
   if (!node_) return;
   for (const auto& entry : node_) {
     const std::string key = keyText(entry.first, file_);
-    if (!used_.count(key)) throw InputError(file_, lineOf(entry.first), path_ + "." + key, "unknown key");
+    if (!used_.count(key)) throw InputError(file_, lineOf(entry.first), path_ + "." + key, unknownKeyProblem(key));
   }
+}
+
+std::string YamlSection::unknownKeyProblem(const std::string& key) const {
+  const std::string* nearest = nullptr;
+  std::size_t nearest_distance = 0;
+  for (const std::string& known : used_) {
+    const std::size_t d = editDistance(key, known);
+    if (!nearest || d < nearest_distance) {
+      nearest = &known;
+      nearest_distance = d;
+    }
+  }
+  // A short key is near every other short key: the edits must leave most of it.
+  const bool misspelt = nearest && nearest_distance <= kMaxMisspelling && 2 * nearest_distance < key.size();
+  if (misspelt) return "unknown key (did you mean " + *nearest + "?)";
+  if (used_.empty()) return "unknown key (this section takes none)";
+  if (used_.size() > kMaxKeysListed)
+    return "unknown key (not one of the " + std::to_string(used_.size()) + " keys " + path_ + " takes)";
+  std::string list;
+  for (const std::string& known : used_) list += (list.empty() ? "" : ", ") + known;
+  return "unknown key (expected one of " + list + ")";
+}
+
+void YamlSection::failOutOfRange(const char* key, double value, const char* expected) const {
+  const YAML::Node given = node_ ? node_[key] : YAML::Node(YAML::NodeType::Undefined);
+  std::ostringstream text;
+  if (given && given.IsScalar()) {
+    text << given.Scalar();
+  } else {
+    text << value;
+  }
+  fail(key, std::string("expected ") + expected + ", got " + text.str());
 }
 
 void YamlSection::fail(const char* key, const std::string& problem) const {

@@ -43,15 +43,21 @@ class YamlSection {
   // Marks a key as known without reading it (a subsection read elsewhere).
   YAML::Node take(const char* key);
 
+  // Fails naming `expected` and the value as the file gave it (or, for a
+  // default a setting elsewhere made invalid, as it stands).
   void requireRange(const char* key, double value, double lo, double hi, const char* expected) const {
-    if (!(value >= lo && value <= hi)) fail(key, std::string("expected ") + expected);
+    if (!(value >= lo && value <= hi)) failOutOfRange(key, value, expected);
   }
 
+  // A key that no read asked for is an error; a known key within a few
+  // letters of it is named (a misspelling), else the known keys are listed.
   void rejectUnknownKeys() const;
 
   [[noreturn]] void fail(const char* key, const std::string& problem) const;
 
  private:
+  [[noreturn]] void failOutOfRange(const char* key, double value, const char* expected) const;
+  std::string unknownKeyProblem(const std::string& key) const;
   static std::string scalar(const YAML::Node& v) { return v.IsScalar() ? v.Scalar() : "a non-scalar"; }
   template <typename T>
   static std::string typeName() {
