@@ -7,6 +7,7 @@
 #include <spdlog/spdlog.h>
 
 #include "scanfilter/dds/default_paths.hpp"
+#include "scanfilter/dds/metrics_address.hpp"
 #include "scanfilter/input_error.hpp"
 
 namespace scanfilter::dds_io {
@@ -63,7 +64,13 @@ std::optional<int> ServiceCli::parse(int argc, char** argv) {
   if (!log_level.empty()) s.log_level = log_level;
   if (domain) s.participant.domain_id = *domain;
   if (ns) s.topic_namespace = *ns;
-  if (metrics) s.metrics_address = *metrics;
+  if (metrics) {
+    if (const auto problem = metricsAddressProblem(*metrics)) {
+      std::cerr << name_ << ": error: --metrics-address: " << *problem << "\n";
+      return 2;
+    }
+    s.metrics_address = *metrics;
+  }
   s.participant.name = "scanfilter_" + name_;
   spdlog::set_level(spdlog::level::from_str(s.log_level));
   spdlog::set_pattern("[%Y-%m-%d %H:%M:%S.%e] [" + name_ + "] [%l] %v");

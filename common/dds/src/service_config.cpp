@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "scanfilter/dds/metrics_address.hpp"
 #include "scanfilter/input_error.hpp"
 #include "scanfilter/yaml_section.hpp"
 
@@ -49,8 +50,7 @@ ServiceConfigFile loadServiceConfig(const std::string& path, const std::string& 
   section.requireRange("max_blocking_s", s.stream.max_blocking_s, 0.001, 3600, "0.001-3600 (s)");
   if (s.topic_namespace.find_first_of(" \t#") != std::string::npos || (!s.topic_namespace.empty() && (s.topic_namespace.front() == '/' || s.topic_namespace.back() == '/')))
     section.fail("namespace", "expected a ROS name without spaces or leading/trailing '/', got \"" + s.topic_namespace + "\"");
-  if (s.metrics_address.find(':') == std::string::npos)
-    section.fail("metrics_address", "expected host:port, got \"" + s.metrics_address + "\"");
+  if (const auto problem = metricsAddressProblem(s.metrics_address)) section.fail("metrics_address", *problem);
   // The error_code form: a name too long for the file system is "no such
   // file" too, not a filesystem_error (found by penetration_filter_config_fuzz).
   std::error_code error;

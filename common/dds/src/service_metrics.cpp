@@ -6,6 +6,7 @@
 #include <fstream>
 #include <mutex>
 #include <sstream>
+#include <stdexcept>
 #include <vector>
 
 namespace scanfilter::dds_io {
@@ -21,6 +22,17 @@ double residentBytes() {
   return static_cast<double>(pages_resident) * static_cast<double>(sysconf(_SC_PAGESIZE));
 }
 
+// The HTTP server, or an error that names the address: civetweb's own says
+// only "null context when constructing CivetServer".
+std::unique_ptr<Exposer> startExposer(const std::string& address) {
+  try {
+    return std::make_unique<Exposer>(address);
+  } catch (const std::exception& e) {
+    throw std::runtime_error("cannot serve metrics on " + address + " (service.metrics_address, --metrics-address): " + e.what() +
+                             " Is another process using that port?");
+  }
+}
+
 }  // namespace
 
 // Microseconds to tens of milliseconds: a filter step takes tens of µs, a
@@ -32,7 +44,7 @@ Histogram::BucketBoundaries ServiceMetrics::latencyBuckets() {
 ServiceMetrics::ServiceMetrics(const std::string& service, const std::string& address, const std::string& version)
     : service_(service),
       address_(address),
-      exposer_(std::make_unique<Exposer>(address)),
+      exposer_(startExposer(address)),
       registry_(std::make_shared<Registry>()),
       received_(BuildCounter().Name("scanfilter_scans_received_total").Help("Scans received").Register(*registry_).Add({{"service", service}})),
       published_(BuildCounter().Name("scanfilter_scans_published_total").Help("Scans published").Register(*registry_).Add({{"service", service}})),
