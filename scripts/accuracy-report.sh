@@ -10,10 +10,16 @@
 # written by hand from these numbers.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+REAL=${REAL_DATA:-../shared/data/real}
+# The real recordings are not in the repository (README, "Real recordings"):
+# say so now, not after ten minutes of simulation.
+for log in "$REAL"/carmen/{intel,freiburg-079,aces,csail}-corrected.log.gz "$REAL"/mines_urg04lx/exp{1,2}.dat; do
+  [ -f "$log" ] || { echo "accuracy-report: $log: no such file; the real recordings go in $REAL" \
+    "(README.md says where to get them; REAL_DATA=DIR for another folder)" >&2; exit 1; }
+done
 bash scripts/install-deps.sh
 bash scripts/build.sh
 BIN=${BUILD_DIR:-build}
-REAL=${REAL_DATA:-../shared/data/real}
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 
