@@ -79,19 +79,23 @@ PngImage ScanRenderer::draw(const RenderOptions& options) const {
   PngImage image(kPanels * pw + (kPanels + 1) * kMargin, ph + kTitleHeight + kLegendHeight + kMargin, kBackground);
   image.text(kMargin, kMargin / 2, options.title, kTextColour, kTextScale);
   const int before_x = kMargin, after_x = 2 * kMargin + pw;
-  image.text(before_x, kCaptionY, "BEFORE (COLOUR = TRUTH)", kTextColour, kTextScale);
+  // A real recording has no truth: its points are drawn unlabelled.
+  const bool has_truth =
+      std::any_of(points_.begin(), points_.end(), [](const auto& pt) { return pt.truth != kUnknown; });
+  image.text(before_x, kCaptionY, has_truth ? "BEFORE (COLOUR = TRUTH)" : "BEFORE (NO TRUTH IN THE LOG)", kTextColour,
+             kTextScale);
   image.paste(drawPanel(false), before_x, kTitleHeight + kMargin / 2);
   image.text(after_x, kCaptionY, "AFTER (COLOUR = FILTER LABEL)", kTextColour, kTextScale);
   image.paste(drawPanel(true), after_x, kTitleHeight + kMargin / 2);
 
   // Legend.
   const int ly = ph + kTitleHeight + kMargin;
-  image.legend(kMargin, ly,
-               {{kValidColour, "VALID"},
-                {kJumpColour, "JUMP"},
-                {kMisdetectedColour, "MISDETECTED"},
-                {kTrajectoryColour, "SENSOR PATH"}},
-               kTextColour, kTextScale);
+  std::vector<std::pair<Rgb, std::string>> entries = {{kValidColour, "VALID"},
+                                                       {kJumpColour, "JUMP"},
+                                                       {kMisdetectedColour, "MISDETECTED"},
+                                                       {kTrajectoryColour, "SENSOR PATH"}};
+  if (!has_truth) entries.insert(entries.begin(), {kUnlabelledColour, "NO TRUTH"});
+  image.legend(kMargin, ly, entries, kTextColour, kTextScale);
   return image;
 }
 
