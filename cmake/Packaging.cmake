@@ -1,7 +1,7 @@
 # Installation and the .deb (docs/operations.md, "Install").
 #
 #   cmake --install BUILD --prefix P     P/bin/scanfilter-*, P/etc/scanfilter/,
-#                                        P/lib/systemd/system/, P/share/doc/scanfilter/
+#                                        P/lib/systemd/system/, P/share/doc/scanfilter/ (README.md, docs/)
 #   cpack --config BUILD/CPackConfig.cmake   scanfilter_<version>_<arch>.deb (prefix /usr,
 #                                        configs in /etc/scanfilter, saved maps in /var/lib/scanfilter)
 #
@@ -48,7 +48,11 @@ if(SCANFILTER_BUILD_SERVICES)
     set(SCANFILTER_DOCDIR \"${CMAKE_INSTALL_DATADIR}/doc/scanfilter\")
     include(\"${PROJECT_SOURCE_DIR}/cmake/install_layout.cmake\")")
 endif()
-install(FILES README.md docs/operations.md DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/scanfilter)
+# The README and docs/ side by side, as in the source tree, so that the
+# README's links to docs/ and the docs' links to each other and to their
+# pictures hold where they are installed.
+install(FILES README.md DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/scanfilter)
+install(DIRECTORY docs/ DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/scanfilter/docs)
 # The Prometheus scrape config, alert rules and Grafana dashboard, for the
 # operator to copy (docs/operations.md, "Monitoring and alerts").
 install(DIRECTORY deploy/monitoring/ DESTINATION ${CMAKE_INSTALL_DATADIR}/scanfilter/monitoring)

@@ -127,15 +127,15 @@ void prChart(const std::string& path, const std::string& title, const std::vecto
 
 // The window of kFigureFrames scans showing most of both artefact kinds:
 // ranked by the rarer kind's count in the truth, then by the total.
-std::size_t busiestWindow(const sim::LabelledLog& log) {
+std::size_t busiestWindow(const sim::LabelledLog& log, std::size_t frames) {
   const auto count = [](const Scan& scan, PointCode c) {
     return static_cast<std::size_t>(std::count(scan.truth.begin(), scan.truth.end(), static_cast<std::uint8_t>(c)));
   };
   std::size_t best = 0;
   std::pair<std::size_t, std::size_t> best_rank{0, 0};
-  for (std::size_t i = 0; i + kFigureFrames <= log.scans.size(); ++i) {
+  for (std::size_t i = 0; i + frames <= log.scans.size(); ++i) {
     std::size_t jump = 0, misdetected = 0;
-    for (std::size_t k = i; k < i + kFigureFrames; ++k) {
+    for (std::size_t k = i; k < i + frames; ++k) {
       jump += count(log.scans[k], PointCode::kJump);
       misdetected += count(log.scans[k], PointCode::kMisdetected);
     }
@@ -147,17 +147,20 @@ std::size_t busiestWindow(const sim::LabelledLog& log) {
 
 // Every filter's labels on the same frames of one log, stacked.
 void framesFigure(const std::string& path, const sim::LabelledLog& log, const std::vector<TunedFamily>& tuned) {
-  const std::size_t first = busiestWindow(log);
+  // A log shorter than the window (--max-frames 5) is drawn whole.
+  const std::size_t frames = std::min<std::size_t>(kFigureFrames, log.scans.size());
+  if (frames == 0) return;
+  const std::size_t first = busiestWindow(log, frames);
   std::vector<PngImage> rows;
   int width = 0, height = 0;
   const Logs one{sim::LabelledLog{log.name, log.sensor,
                                   std::vector<Scan>(log.scans.begin(),
-                                                    log.scans.begin() + static_cast<std::ptrdiff_t>(first + kFigureFrames))}};
+                                                    log.scans.begin() + static_cast<std::ptrdiff_t>(first + frames))}};
   for (const auto& t : tuned) {
     accuracy::LogLabels labels;
     accuracy::scoreFamily(*t.family, t.tuned, one, &labels);  // from the log's start: multi-frame filters need their history
     ScanRenderer renderer;
-    for (std::size_t i = first; i < first + kFigureFrames; ++i) renderer.add(one[0].scans[i], log.sensor, labels[0][i]);
+    for (std::size_t i = first; i < first + frames; ++i) renderer.add(one[0].scans[i], log.sensor, labels[0][i]);
     rows.push_back(renderer.draw({.panel_pixels = kFigurePanelPixels, .title = t.family->name + " (tuned)"}));
     width = std::max(width, rows.back().width());
     height += rows.back().height();
@@ -166,7 +169,7 @@ void framesFigure(const std::string& path, const sim::LabelledLog& log, const st
   int y = 0;
   for (const auto& row : rows) figure.paste(row, 0, y), y += row.height();
   figure.save(path);
-  std::cerr << "frames figure: " << log.name << " scans " << first << "-" << first + kFigureFrames - 1 << "\n";
+  std::cerr << "frames figure: " << log.name << " scans " << first << "-" << first + frames - 1 << "\n";
 }
 
 // `as_tested`: the tuned filters' scores on the built-in test logs when the

@@ -33,8 +33,8 @@ int main(int argc, char** argv) {
   simulate->add_option("-o,--output", sim.output, "output scan log (.scanlog.jsonl)")->required();
 
   ReplayOptions replay;
-  auto* rep = app.add_subcommand("replay", "Run the two-step filter over a scan log or CARMEN log");
-  rep->add_option("input", replay.input, "scan log (.scanlog.jsonl) or CARMEN log (.log, .gz)")->required()->check(CLI::ExistingFile);
+  auto* rep = app.add_subcommand("replay", "Run the two-step filter over a scan log, CARMEN log or Mines URG-04LX log");
+  rep->add_option("input", replay.input, "scan log (.scanlog.jsonl), CARMEN log (.log, .gz) or Mines URG-04LX log (.dat)")->required()->check(CLI::ExistingFile);
   rep->add_option("-o,--output", replay.output, "write the input with `labels` added");
   rep->add_option("--config", replay.config, "filter config YAML (default: built-in defaults, see config/filter.yaml)")->check(CLI::ExistingFile);
   rep->add_flag("--reference", replay.reference, "use the literal reference implementations (slow)");
@@ -52,8 +52,8 @@ int main(int argc, char** argv) {
   ren->add_option("--frames", render.frames, "scans drawn (0: all from the first)")->check(CLI::NonNegativeNumber);
 
   InfoOptions info;
-  auto* inf = app.add_subcommand("info", "Summarise a scan log or CARMEN log");
-  inf->add_option("input", info.input, "scan log or CARMEN log")->required()->check(CLI::ExistingFile);
+  auto* inf = app.add_subcommand("info", "Summarise a scan log, CARMEN log or Mines URG-04LX log");
+  inf->add_option("input", info.input, "scan log, CARMEN log or Mines URG-04LX log")->required()->check(CLI::ExistingFile);
   inf->add_option("--carmen-range-max", info.carmen_range_max, "CARMEN logs: ranges at or above this are no return (m)")->capture_default_str();
 
   DiffOptions diff;
@@ -63,7 +63,7 @@ int main(int argc, char** argv) {
 
   MapOptions map;
   auto* mp = app.add_subcommand("map", "Build an occupancy map (ROS map_server PGM + YAML, PNG) from a log");
-  mp->add_option("input", map.input, "scan log or CARMEN log")->required()->check(CLI::ExistingFile);
+  mp->add_option("input", map.input, "scan log, CARMEN log or Mines URG-04LX log")->required()->check(CLI::ExistingFile);
   mp->add_option("-o,--output", map.output, "base path of the map files")->required();
   mp->add_option("--config", map.config, "filter config YAML")->check(CLI::ExistingFile);
   mp->add_option("--resolution", map.resolution, "cell size (m)")->capture_default_str()->check(CLI::Range(0.005, 10.0));
@@ -82,7 +82,9 @@ int main(int argc, char** argv) {
   ben->add_option("-o,--output-dir", bench.output_dir, "write accuracy-comparison.md and the PNG figures here");
   ben->add_option("--sensor", bench.sensor, "sensor preset of the simulated logs (tof, triangulation, or a file; default: each scene's own)");
   ben->add_option("--max-frames", bench.max_frames, "scans per simulated log (0: whole trajectory)")->check(CLI::NonNegativeNumber);
-  ben->add_flag("!--no-robustness", bench.robustness, "skip the robustness variants (noise, resolution, drift)");
+  // A plain flag and a callback: CLI11 prints a negated flag's default as "{false}".
+  ben->add_flag_callback("--no-robustness", [&bench] { bench.robustness = false; },
+                         "skip the robustness variants (noise, resolution, drift)");
 
   ReportRealOptions real;
   auto* rr = app.add_subcommand("report-real",

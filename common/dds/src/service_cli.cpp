@@ -42,7 +42,8 @@ std::optional<int> ServiceCli::parse(int argc, char** argv) {
   std::string log_level;
   std::optional<int> domain;
   std::optional<std::string> ns, metrics;
-  app.add_option("--config", config_path, "service config YAML (documented in config/" + name_ + ".yaml)")
+  // The default file is the documented one, wherever this binary reads it from.
+  app.add_option("--config", config_path, "service config YAML, every key documented in the default")
       ->capture_default_str();
   app.add_option("--log-level", log_level, "overrides service.log_level: trace, debug, info, warn, error, off")
       ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}));

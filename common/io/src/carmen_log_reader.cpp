@@ -60,7 +60,12 @@ CarmenLogReader::CarmenLogReader(const std::string& path, const ScanSourceOption
     if (tokens[1] == "robot_front_laser_max")
       header_.sensor.range_max = number(tokens, 2, "robot_front_laser_max");
   }
-  if (!pending_) throw InputError(path, 0, "", "no FLASER or ROBOTLASER1 line: not a CARMEN laser log");
+  // A file that is no log at all ends up here (openScanSource reads whatever
+  // is neither a scan log nor a Mines log as CARMEN): name all three.
+  if (!pending_)
+    throw InputError(path, 0, "",
+                     "no FLASER or ROBOTLASER1 line: not a CARMEN laser log (nor a scan log, whose first line is a "
+                     "JSON object, nor a Mines URG-04LX log, 707 numbers a line)");
   // The angular accuracy defaults to the beam step of the first scan.
   current_line_ = pending_line_;
   Scan first;
