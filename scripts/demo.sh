@@ -31,4 +31,7 @@ fi
 echo
 echo "Open out/$SCENE-before-after.png: every return on the left (coloured by truth),"
 echo "the filter's labels on the right (kept = black, jump = red, misdetected = blue)."
+echo "The walls show twice, turned: the points are drawn where the simulated wheel odometry"
+echo "(drifting 1 %, 0.5 deg per m, as a real robot's does) says they were, as the filter sees them."
+echo "The map the live pipeline built: out/pipeline/map.png (map_server files beside it)."
 echo "Live output: out/pipeline/pipeline.labeled.scanlog.jsonl (draw it: build/tools/scanfilter render FILE -o PNG)."
