@@ -34,7 +34,10 @@ int main(int argc, char** argv) {
 
   ReplayOptions replay;
   auto* rep = app.add_subcommand("replay", "Run the two-step filter over a scan log, CARMEN log or Mines URG-04LX log");
-  rep->add_option("input", replay.input, "scan log (.scanlog.jsonl), CARMEN log (.log, .gz) or Mines URG-04LX log (.dat)")->required()->check(CLI::ExistingFile);
+  rep->add_option("input", replay.input,
+                  "scan log (.scanlog.jsonl), CARMEN log (.log, .gz) or Mines URG-04LX log (.dat)")
+      ->required()
+      ->check(CLI::ExistingFile);
   rep->add_option("-o,--output", replay.output, "write the input with `labels` added");
   rep->add_option("--config", replay.config, "filter config YAML (default: built-in defaults, see config/filter.yaml)")->check(CLI::ExistingFile);
   rep->add_flag("--reference", replay.reference, "use the literal reference implementations (slow)");
@@ -53,7 +56,9 @@ int main(int argc, char** argv) {
 
   InfoOptions info;
   auto* inf = app.add_subcommand("info", "Summarise a scan log, CARMEN log or Mines URG-04LX log");
-  inf->add_option("input", info.input, "scan log, CARMEN log or Mines URG-04LX log")->required()->check(CLI::ExistingFile);
+  inf->add_option("input", info.input, "scan log, CARMEN log or Mines URG-04LX log")
+      ->required()
+      ->check(CLI::ExistingFile);
   inf->add_option("--carmen-range-max", info.carmen_range_max, "CARMEN logs: ranges at or above this are no return (m)")->capture_default_str();
 
   DiffOptions diff;
@@ -63,7 +68,9 @@ int main(int argc, char** argv) {
 
   MapOptions map;
   auto* mp = app.add_subcommand("map", "Build an occupancy map (ROS map_server PGM + YAML, PNG) from a log");
-  mp->add_option("input", map.input, "scan log, CARMEN log or Mines URG-04LX log")->required()->check(CLI::ExistingFile);
+  mp->add_option("input", map.input, "scan log, CARMEN log or Mines URG-04LX log")
+      ->required()
+      ->check(CLI::ExistingFile);
   mp->add_option("-o,--output", map.output, "base path of the map files")->required();
   mp->add_option("--config", map.config, "filter config YAML")->check(CLI::ExistingFile);
   mp->add_option("--resolution", map.resolution, "cell size (m)")->capture_default_str()->check(CLI::Range(0.005, 10.0));

@@ -80,8 +80,9 @@ int runPlayback(ServiceRuntime& runtime, const IngestSettings& settings, ScanSou
 
 int main(int argc, char** argv) {
   const ServiceDescription description{
-      "scan_ingest", "scanfilter scan_ingest: replays a scan log, CARMEN log or Mines URG-04LX log, simulates a scene, or "
-      "poses a live LaserScan with its odometry (source.kind: log, simulator, live)",
+      "scan_ingest",
+      "scanfilter scan_ingest: replays a scan log, CARMEN log or Mines URG-04LX log, simulates a scene, or poses a "
+      "live LaserScan with its odometry (source.kind: log, simulator, live)",
       "127.0.0.1:9471", {"source", "live", "playback"}};
   return runService(argc, argv, description, [](ServiceRuntime& runtime) {
     const IngestSettings settings = readIngestSettings(runtime.config());

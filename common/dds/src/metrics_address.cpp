@@ -17,16 +17,17 @@ bool isHostCharacter(char c) {
 
 bool isPort(std::string_view text) {
   if (text.empty() || text.size() > kMaxPortDigits) return false;
-  if (!std::all_of(text.begin(), text.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }))
-    return false;
+  const auto isDigit = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; };
+  if (!std::all_of(text.begin(), text.end(), isDigit)) return false;
   const long port = std::stol(std::string(text));
-  return port >= 1 && port <= kMaxPort;
+  return port <= kMaxPort;
 }
 
 }  // namespace
 
 std::optional<std::string> metricsAddressProblem(std::string_view address) {
-  const std::string expected = "expected host:port (an IPv4 address or host name, a port 1-65535, e.g. 127.0.0.1:9471)";
+  const std::string expected =
+      "expected host:port (an IPv4 address or host name, a port 0-65535, 0: any free one; e.g. 127.0.0.1:9471)";
   const std::string got = ", got \"" + std::string(address) + "\"";
   const std::size_t colon = address.rfind(':');
   if (colon == std::string_view::npos) return expected + got;

@@ -28,8 +28,8 @@ std::unique_ptr<Exposer> startExposer(const std::string& address) {
   try {
     return std::make_unique<Exposer>(address);
   } catch (const std::exception& e) {
-    throw std::runtime_error("cannot serve metrics on " + address + " (service.metrics_address, --metrics-address): " + e.what() +
-                             " Is another process using that port?");
+    throw std::runtime_error("cannot serve metrics on " + address + " (service.metrics_address, --metrics-address): " +
+                             e.what() + " Is another process using that port?");
   }
 }
 
