@@ -117,8 +117,8 @@ int main(int argc, char** argv) {
       if (sensors.size() > 1 || !sensor.empty())
         std::printf("%s**sensor: %s**\n\n", &sensor == &sensors.front() ? "" : "\n", sensor.c_str());
       std::printf(
-          "| scene | filter | jump P / R / F1 | misdetected P / R / F1 | artefacts P / R / F1 | valid deleted | thin legs "
-          "kept |\n");
+          "| scene | filter | jump P / R / F1 | misdetected P / R / F1 | artefacts P / R / F1 | valid deleted "
+          "| thin legs kept |\n");
       std::printf("|---|---|---|---|---|---|---|\n");
       std::vector<accuracy::LabelledLog> all;
       for (const auto& scene : sim::builtinSceneNames()) {

@@ -6,9 +6,9 @@
 
 namespace scanfilter::jump_service {
 
-// The range-noise model step 1 judges with
-// (docs/beyond-the-paper.md, 18), on the service's endpoint: σ(d) = base + quadratic·d², each term
-// the larger of the measured and the configured one. A base far above the
+// The range-noise model step 1 judges with (docs/beyond-the-paper.md, 18), on
+// the service's endpoint: σ(d) = base + quadratic·d², each term the larger
+// of the measured and the configured one. A base far above the
 // sensor's data sheet says its returns are noisier than it claims (a dirty
 // window, a failing unit), and step 1 is keeping more of what it would cut.
 class NoiseMetrics {

@@ -1,8 +1,8 @@
 #include "scanfilter/surface_memory.hpp"
 
 #include <algorithm>
-#include <utility>
 #include <cmath>
+#include <utility>
 
 #include "scanfilter/scan_geometry.hpp"
 

@@ -79,9 +79,10 @@ struct PenetrationFilterParams {
   // beams running beside it seem to cross it. 0: every return votes (the
   // default: on the simulator it costs ghost recall, as 15 does).
   double grazing_vote_max_deg = 0.0;  // degrees
-  // Beyond the paper (docs/beyond-the-paper.md, 1): step 1 deletes every cluster of one
-  // or two beams, so a thin leg is always lost. A jump point is restored when
-  // the cached frames put at least `rescue_min_count` returns in its cell:
+  // Beyond the paper (docs/beyond-the-paper.md, 1): step 1 deletes every
+  // cluster of one or two beams, so a thin leg is always lost. A jump point
+  // is restored when the cached frames put at least `rescue_min_count`
+  // returns in its cell:
   // persistent evidence that a jump point, which moves with the viewpoint,
   // does not leave. Off reproduces the paper.
   bool rescue_persistent_points = true;
@@ -176,9 +177,9 @@ struct PenetrationFilterParams {
   // edge_vote_margin_deg > 0 no lone return votes: it lies beside a depth
   // edge. false: no marked return votes (until 39).
   bool free_space_lone_returns_vote = true;
-  // Beyond the paper (thin_object_check.hpp;
-  // docs/beyond-the-paper.md, 25): a kept return in a stretch of at most thin_object_max_beams
-  // returns standing in front of both sides (by thin_object_depth_step; the
+  // Beyond the paper (thin_object_check.hpp; docs/beyond-the-paper.md, 25):
+  // a kept return in a stretch of at most thin_object_max_beams returns
+  // standing in front of both sides (by thin_object_depth_step; the
   // object's own returns and its mixed ones beside them) becomes a jump point
   // when a cell holding thin_object_min_returns cached returns lies on its
   // beam more than thin_object_depth_step in front of it, within
