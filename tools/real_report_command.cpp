@@ -16,6 +16,7 @@
 #include "table_numbers.hpp"
 #include "scanfilter/filter_config.hpp"
 #include "scanfilter/map_files.hpp"
+#include "scanfilter/map_picture.hpp"
 #include "scanfilter/mines_log_reader.hpp"
 #include "scanfilter/occupancy_grid.hpp"
 #include "scanfilter/scan_source.hpp"
@@ -27,8 +28,6 @@ namespace scanfilter::cli {
 namespace {
 
 constexpr double kDeg = M_PI / 180.0;
-constexpr int kMapGap = 20;  // pixels between the two maps
-constexpr int kMapTitleHeight = 30;
 constexpr double kNoPoseJumpReset = 1e9;  // m: a threshold no log reaches
 
 struct RecordedLog {
@@ -107,12 +106,9 @@ void saveSideBySide(const OccupancyGrid& unfiltered, const OccupancyGrid& filter
   CellBox box = unfiltered.bounds();
   box.include(filtered.bounds().lo);
   box.include(filtered.bounds().hi);
-  const PngImage left = mapImage(unfiltered, box), right = mapImage(filtered, box);
-  PngImage image(left.width() * 2 + kMapGap, left.height() + kMapTitleHeight);
-  image.text(4, 4, title + ": UNFILTERED (LEFT), FILTERED (RIGHT)", {0, 0, 0}, 1);
-  image.paste(left, 0, kMapTitleHeight);
-  image.paste(right, left.width() + kMapGap, kMapTitleHeight);
-  image.save(path);
+  mapPicture({mapImage(unfiltered, box), mapImage(filtered, box)}, unfiltered.params().resolution,
+             title + ": UNFILTERED (LEFT), FILTERED (RIGHT)")
+      .save(path);
 }
 
 

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "scanfilter/input_error.hpp"
+#include "scanfilter/map_picture.hpp"
 #include "scanfilter/png_image.hpp"
 
 namespace scanfilter {
@@ -16,6 +17,7 @@ namespace {
 constexpr int kPgmOccupied = 0;
 constexpr int kPgmFree = 254;
 constexpr int kPgmUnknown = 205;
+constexpr const char* kPictureTitle = "OCCUPANCY MAP";
 constexpr char kStateMagic[8] = {'S', 'F', 'M', 'A', 'P', '0', '0', '1'};
 
 // Writes through a temporary file and renames it into place.
@@ -75,8 +77,7 @@ void saveMap(const OccupancyGrid& grid, const std::string& base, const std::stri
         << "occupied_thresh: " << grid.params().occupied_threshold << "\n"
         << "free_thresh: " << grid.params().free_threshold << "\n";
   });
-  mapImage(grid, box).save(base + ".png.tmp");
-  std::filesystem::rename(base + ".png.tmp", base + ".png");
+  mapPicture({mapImage(grid, box)}, grid.params().resolution, kPictureTitle).save(base + ".png");  // renamed in place
   writeAtomically(base + ".logodds", [&](std::ofstream& out) {
     out.write(kStateMagic, sizeof kStateMagic);
     const double resolution = grid.params().resolution;
