@@ -1,4 +1,5 @@
 #include <iostream>
+#include <string>
 
 #include "commands.hpp"
 #include "scanfilter/filter_config.hpp"
@@ -26,7 +27,9 @@ int runMap(const MapOptions& options) {
     else filter.apply(record.scan, sensor, labels);
     grid.integrate(record.scan, sensor, labels);
   }
-  saveMap(grid, options.output);
+  saveMap(grid, options.output, {},
+          (options.unfiltered ? "UNFILTERED" : "FILTERED") + std::string(" MAP, ") +
+              std::to_string(grid.scansIntegrated()) + " SCANS");
   const CellBox box = grid.bounds();
   std::cout << "map of " << grid.scansIntegrated() << " scans (" << (options.unfiltered ? "unfiltered" : "filtered")
             << "): " << box.width() << " x " << box.height() << " cells at " << params.resolution << " m, "

@@ -5,6 +5,7 @@
 // the map (map_server PGM + YAML, PNG, exact state) periodically and on exit.
 #include <filesystem>
 #include <mutex>
+#include <string>
 
 #include <spdlog/spdlog.h>
 
@@ -91,7 +92,9 @@ class MapService {
     if (settings_.save_path.empty()) return;
     std::lock_guard lock(mutex_);
     if (!grid_.bounds().empty()) {
-      saveMap(grid_, settings_.save_path, progress_.toText());  // the state and which scans it holds, in one rename
+      // The state and which scans it holds, in one rename.
+      saveMap(grid_, settings_.save_path, progress_.toText(),
+              "OCCUPANCY MAP, " + std::to_string(progress_.scans_integrated) + " SCANS");
       progress_.save(settings_.save_path);  // a readable copy
       metrics_.mapSaved();
     }

@@ -17,7 +17,6 @@ namespace {
 constexpr int kPgmOccupied = 0;
 constexpr int kPgmFree = 254;
 constexpr int kPgmUnknown = 205;
-constexpr const char* kPictureTitle = "OCCUPANCY MAP";
 constexpr char kStateMagic[8] = {'S', 'F', 'M', 'A', 'P', '0', '0', '1'};
 
 // Writes through a temporary file and renames it into place.
@@ -56,7 +55,7 @@ PngImage mapImage(const OccupancyGrid& grid, const CellBox& box) {
   return png;
 }
 
-void saveMap(const OccupancyGrid& grid, const std::string& base, const std::string& note) {
+void saveMap(const OccupancyGrid& grid, const std::string& base, const std::string& note, const std::string& title) {
   const CellBox box = grid.bounds();
   const auto width = static_cast<int>(box.width()), height = static_cast<int>(box.height());
   const std::string stem = std::filesystem::path(base).filename().string();
@@ -77,7 +76,7 @@ void saveMap(const OccupancyGrid& grid, const std::string& base, const std::stri
         << "occupied_thresh: " << grid.params().occupied_threshold << "\n"
         << "free_thresh: " << grid.params().free_threshold << "\n";
   });
-  mapPicture({mapImage(grid, box)}, grid.params().resolution, kPictureTitle).save(base + ".png");  // renamed in place
+  mapPicture({mapImage(grid, box)}, grid.params().resolution, title).save(base + ".png");  // renamed in place
   writeAtomically(base + ".logodds", [&](std::ofstream& out) {
     out.write(kStateMagic, sizeof kStateMagic);
     const double resolution = grid.params().resolution;

@@ -12,8 +12,10 @@ namespace scanfilter {
 // (the exact state, to continue from). Every file is written to a temporary
 // name and renamed, so a crash never leaves a torn file. `note` (text, e.g.
 // which scans the map holds) is stored in BASE.logodds after the cells: it
-// is replaced in the same rename as the state it describes.
-void saveMap(const OccupancyGrid& grid, const std::string& base, const std::string& note = {});
+// is replaced in the same rename as the state it describes. `title` heads
+// the picture (upper case: its font has no lower case).
+void saveMap(const OccupancyGrid& grid, const std::string& base, const std::string& note = {},
+             const std::string& title = "OCCUPANCY MAP");
 
 // The map one pixel a cell (map_server grey levels) over `box`, which may be
 // larger than the grid's own bounds (to draw two maps on one frame); what
