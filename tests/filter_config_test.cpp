@@ -112,9 +112,13 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(ss.neighbour_radius, ds.neighbour_radius);
   EXPECT_EQ(ss.min_neighbours, ds.min_neighbours);
   EXPECT_EQ(ss.max_thickness, ds.max_thickness);
+  EXPECT_EQ(ss.max_thickness_noise_sigmas, ds.max_thickness_noise_sigmas);
+  EXPECT_EQ(ss.max_thickness_ceiling, ds.max_thickness_ceiling);
   EXPECT_EQ(ss.max_angle_deg, ds.max_angle_deg);
   EXPECT_EQ(ss.max_gap, ds.max_gap);
   EXPECT_EQ(ss.max_deviation, ds.max_deviation);
+  EXPECT_EQ(ss.max_deviation_noise_sigmas, ds.max_deviation_noise_sigmas);
+  EXPECT_EQ(ss.max_deviation_ceiling, ds.max_deviation_ceiling);
   EXPECT_EQ(ss.min_cells, ds.min_cells);
   EXPECT_EQ(ss.min_length, ds.min_length);
   EXPECT_FALSE(shipped.angular_accuracy_deg) << "auto: from the sensor";
@@ -314,6 +318,13 @@ TEST(FilterConfigErrors, NameFileLineAndKey) {
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    max_gap: -0.1\n"),
             "f.yaml:3: penetration_filter.surface_memory.max_gap: expected 0 <= value <= 10 (m; 0: off), got -0.1");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    max_gap: 0\n"), "no error");
+  EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    sparse_surfaces:\n      max_thickness_noise_sigmas: "
+                    "-1\n"),
+            "f.yaml:4: penetration_filter.surface_memory.sparse_surfaces.max_thickness_noise_sigmas: expected 0 <= "
+            "value <= 100 (σ of the range noise; 0: max_thickness everywhere), got -1");
+  EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    sparse_surfaces:\n      max_deviation_ceiling: 2\n"),
+            "f.yaml:4: penetration_filter.surface_memory.sparse_surfaces.max_deviation_ceiling: expected 0 <= value "
+            "<= 1 (m), got 2");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    sparse_surfaces:\n      min_neighbours: 2\n"),
             "f.yaml:4: penetration_filter.surface_memory.sparse_surfaces.min_neighbours: expected an integer >= 3 (a "
             "cell and two more make a line), got 2");

@@ -16,6 +16,7 @@
 #include "scanfilter/scan_geometry.hpp"
 #include "scanfilter/sim/labelled_log.hpp"
 #include "scanfilter/sim/ray_caster.hpp"
+#include "scanfilter/sim/sensor_preset.hpp"
 #include "scanfilter/two_step_filter.hpp"
 
 namespace scanfilter {
@@ -746,11 +747,8 @@ struct MarkedMisdetected {
   std::size_t artefacts = 0;  // truth misdetected, labelled so
   std::size_t valid = 0;      // truth valid, labelled so
 };
-MarkedMisdetected hallMarkedMisdetected(bool mirror_ghosts) {
-  const sim::Scene scene = sim::findScene("hall");
+MarkedMisdetected hallMarkedMisdetected(const sim::Scene& scene, const FilterConfig& config) {
   const auto log = sim::simulateLog(scene, 1, "hall", 0);
-  FilterConfig config;
-  config.params.penetration.surface_memory.mirror_ghosts.enabled = mirror_ghosts;
   TwoStepFilter filter(config.resolve(log.sensor), Implementation::kFast);
   MarkedMisdetected marked;
   std::vector<std::uint8_t> labels;
@@ -766,11 +764,34 @@ MarkedMisdetected hallMarkedMisdetected(bool mirror_ghosts) {
   return marked;
 }
 
+MarkedMisdetected hallMarkedMisdetected(bool mirror_ghosts) {
+  FilterConfig config;
+  config.params.penetration.surface_memory.mirror_ghosts.enabled = mirror_ghosts;
+  return hallMarkedMisdetected(sim::findScene("hall"), config);
+}
+
 TEST(PenetrationFilter, MirrorImagesFindGhostsPastTheStretchOfAMirrorTheRobotFaced) {
   const MarkedMisdetected off = hallMarkedMisdetected(false);
   const MarkedMisdetected on = hallMarkedMisdetected(true);
   std::printf("hall ghosts found: %zu off, %zu on; valid returns marked: %zu off, %zu on\n", off.artefacts,
               on.artefacts, off.valid, on.valid);
+  EXPECT_GT(on.artefacts, off.artefacts + off.artefacts / 20) << "at least 5 % more ghosts found";
+  EXPECT_LE(on.valid, off.valid + (on.artefacts - off.artefacts) / 20) << "a valid return per 20 ghosts at most";
+}
+
+// Beyond the paper 42 on the triangulation preset's hall (σ 3 mm + 1 mm/m²):
+// its glossy facade's sparse returns, seen from 3-5 m, scatter 1-3 cm across
+// their line; with the limits that follow the measured noise the memory
+// holds more of it, and the ghosts behind it go.
+TEST(PenetrationFilter, SparseSurfacesOfANoisySensorFollowItsMeasuredNoise) {
+  const sim::Scene scene = sim::sceneWithSensor("hall", "triangulation");
+  FilterConfig fixed;
+  fixed.params.penetration.surface_memory.sparse_surfaces.max_thickness_noise_sigmas = 0.0;
+  fixed.params.penetration.surface_memory.sparse_surfaces.max_deviation_noise_sigmas = 0.0;
+  const MarkedMisdetected off = hallMarkedMisdetected(scene, fixed);
+  const MarkedMisdetected on = hallMarkedMisdetected(scene, FilterConfig{});
+  std::printf("triangulation hall ghosts found: %zu fixed, %zu following the noise; valid returns marked: %zu, %zu\n",
+              off.artefacts, on.artefacts, off.valid, on.valid);
   EXPECT_GT(on.artefacts, off.artefacts + off.artefacts / 20) << "at least 5 % more ghosts found";
   EXPECT_LE(on.valid, off.valid + (on.artefacts - off.artefacts) / 20) << "a valid return per 20 ghosts at most";
 }

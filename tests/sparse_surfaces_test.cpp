@@ -89,6 +89,56 @@ TEST(SparseSurfaces, AThickBandIsNoSurface) {
   EXPECT_TRUE(surfacesOf(band).empty());
 }
 
+// The cells of `cells`, each with the range noise `sigma` where it lies.
+std::vector<CellMean> withRangeNoise(std::vector<CellMean> cells, double sigma) {
+  for (CellMean& c : cells) c.range_noise = sigma;
+  return cells;
+}
+
+// How much of a line the surfaces found cover, in metres.
+double lengthFound(const std::vector<StraightSegment>& found) {
+  double length = 0.0;
+  for (const StraightSegment& s : found) length += (s.b - s.a).norm();
+  return length;
+}
+
+// A triangulation scanner's pane at 4 m: its returns scatter 2 cm (σ)
+// across the line, thicker than max_thickness, but no more than the range
+// noise there. With a quiet sensor's limits only stretches of it that
+// happen to lie thinly pass (under a third of its 2 m); with the limits the
+// noise widens, nearly all of it is one surface.
+TEST(SparseSurfaces, ANoisySensorsPaneIsASurfaceWhereItsRangeNoiseIsThatLarge) {
+  constexpr double kSigma = 0.02;
+  const auto noisy_pane = pane(0.0, 2.0, 1.0, kSigma);
+  EXPECT_LT(lengthFound(surfacesOf(noisy_pane)), 0.7);  // no noise measured
+  const auto found = surfacesOf(withRangeNoise(noisy_pane, kSigma));
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_GT(lengthFound(found), 1.8);
+  SparseSurfaceParams not_widened;
+  not_widened.max_thickness_noise_sigmas = 0.0;
+  not_widened.max_deviation_noise_sigmas = 0.0;
+  EXPECT_LT(lengthFound(surfacesOf(withRangeNoise(noisy_pane, kSigma), not_widened)), 0.7);
+}
+
+// However noisy the sensor, the limits stop at their ceilings: three rows
+// of cells 5 cm apart (a wall at grazing incidence) stay no surface.
+TEST(SparseSurfaces, TheRangeNoiseWidensTheLimitsNoFartherThanTheirCeilings) {
+  std::vector<CellMean> band;
+  for (const double y : {0.975, 1.025, 1.075}) {
+    const auto row = pane(0.0, 2.0, y);
+    band.insert(band.end(), row.begin(), row.end());
+  }
+  EXPECT_TRUE(surfacesOf(withRangeNoise(band, 0.2)).empty());
+  SparseSurfaceParams no_ceiling;
+  no_ceiling.max_thickness_ceiling = 1.0;
+  no_ceiling.max_deviation_ceiling = 1.0;
+  EXPECT_FALSE(surfacesOf(withRangeNoise(band, 0.2), no_ceiling).empty());  // what the ceilings prevent
+  SparseSurfaceParams at_the_floor;  // ceilings at the limits themselves: the noise widens nothing
+  at_the_floor.max_thickness_ceiling = at_the_floor.max_thickness;
+  at_the_floor.max_deviation_ceiling = at_the_floor.max_deviation;
+  EXPECT_LT(lengthFound(surfacesOf(withRangeNoise(pane(0.0, 2.0, 1.0, 0.02), 0.02), at_the_floor)), 0.7);
+}
+
 TEST(SparseSurfaces, TooShortOrTooFewCellsIsNoSurface) {
   // Six cells over 0.25 m: enough cells, too short; long enough at 0.2 m.
   EXPECT_TRUE(surfacesOf(pane(0.0, 0.30, 1.0)).empty());

@@ -25,7 +25,7 @@ void EvidenceRadius::measure(const Scan& scan, const SensorInfo& sensor) {
 }
 
 double EvidenceRadius::at(double range) const {
-  const double noise_reach = params_.noise_sigmas * (noise_.base + noise_.quadratic * range * range);
+  const double noise_reach = params_.noise_sigmas * noise_.sigmaAt(range);
   return std::clamp(noise_reach, params_.min_radius, std::max(params_.min_radius, params_.max_radius));
 }
 

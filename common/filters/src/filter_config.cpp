@@ -67,9 +67,13 @@ void readSparseSurfaces(const YamlSection& parent, SparseSurfaceParams& p, doubl
   s.read("neighbour_radius", p.neighbour_radius);
   s.read("min_neighbours", p.min_neighbours);
   s.read("max_thickness", p.max_thickness);
+  s.read("max_thickness_noise_sigmas", p.max_thickness_noise_sigmas);
+  s.read("max_thickness_ceiling", p.max_thickness_ceiling);
   s.read("max_angle_deg", p.max_angle_deg);
   s.read("max_gap", p.max_gap);
   s.read("max_deviation", p.max_deviation);
+  s.read("max_deviation_noise_sigmas", p.max_deviation_noise_sigmas);
+  s.read("max_deviation_ceiling", p.max_deviation_ceiling);
   s.read("min_cells", p.min_cells);
   s.read("min_length", p.min_length);
   s.read("support_reference_deg", support_reference_deg);
@@ -78,9 +82,15 @@ void readSparseSurfaces(const YamlSection& parent, SparseSurfaceParams& p, doubl
   s.requireRange("neighbour_radius", p.neighbour_radius, 1e-3, 10.0, "0.001 <= value <= 10 (m)");
   s.requireRange("min_neighbours", p.min_neighbours, 3, 1e6, "an integer >= 3 (a cell and two more make a line)");
   s.requireRange("max_thickness", p.max_thickness, 0.0, 1.0, "0 <= value <= 1 (m)");
+  s.requireRange("max_thickness_noise_sigmas", p.max_thickness_noise_sigmas, 0.0, 100.0,
+                 "0 <= value <= 100 (σ of the range noise; 0: max_thickness everywhere)");
+  s.requireRange("max_thickness_ceiling", p.max_thickness_ceiling, 0.0, 1.0, "0 <= value <= 1 (m)");
   s.requireRange("max_angle_deg", p.max_angle_deg, 0.0, 90.0, "0 <= value <= 90 (degrees)");
   s.requireRange("max_gap", p.max_gap, 1e-3, 10.0, "0.001 <= value <= 10 (m)");
   s.requireRange("max_deviation", p.max_deviation, 0.0, 1.0, "0 <= value <= 1 (m)");
+  s.requireRange("max_deviation_noise_sigmas", p.max_deviation_noise_sigmas, 0.0, 100.0,
+                 "0 <= value <= 100 (σ of the range noise; 0: max_deviation everywhere)");
+  s.requireRange("max_deviation_ceiling", p.max_deviation_ceiling, 0.0, 1.0, "0 <= value <= 1 (m)");
   s.requireRange("min_cells", p.min_cells, 2, 1e6, "an integer >= 2 (two cells make a line)");
   s.requireRange("min_length", p.min_length, 1e-3, 100.0, "0.001 <= value <= 100 (m)");
   s.requireRange("support_reference_deg", support_reference_deg, 0.0, 90.0,

@@ -34,10 +34,14 @@ void PenetrationFilter::rememberSparseSurfaces(const Eigen::Vector2d& origin, St
 std::vector<CellMean> PenetrationFilter::cellsInReach(const Eigen::Vector2d& origin) const {
   Eigen::AlignedBox2d box = returnBounds(points_);
   box.extend(origin);
+  // The noise step 2 measures (Beyond the paper 33), at the cell's range
+  // from this frame's sensor: the cells in reach were seen from near here.
+  const RangeNoiseModel noise = evidence_radius_.noise();
   std::vector<CellMean> cells;
   grid_.forEachCountedCellIn(grid_.cellOf(box.min()), grid_.cellOf(box.max()),
                              [&](CellIndex c, int count, const Eigen::Vector2d& at) {
-                               cells.push_back({c, at, count <= params_.obstacle_threshold});
+                               cells.push_back({c, at, count <= params_.obstacle_threshold,
+                                                noise.sigmaAt((at - origin).norm())});
                              });
   return cells;
 }

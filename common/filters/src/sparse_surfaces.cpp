@@ -86,8 +86,27 @@ PrincipalAxes principalAxes(const Eigen::Matrix2d& covariance) {
 
 int cellsWithin(double distance, double cell_size) { return static_cast<int>(std::ceil(distance / cell_size)); }
 
-// How far off a line a cell may lie and still be on it.
-double onLineTolerance(const SparseSurfaceParams& params) { return 2 * params.max_thickness; }
+// A limit the range noise at a cell widens: `sigmas` σ where that is more
+// than `limit`, but no more than `ceiling` (beyond it a leg's blob or a
+// scatter of mixed returns would pass for a line).
+double widenedByNoise(double limit, double sigmas, double ceiling, double range_noise) {
+  return std::max(limit, std::min(ceiling, sigmas * range_noise));
+}
+
+// How thinly the cells around this one must lie along their line.
+double maxThickness(const CellMean& c, const SparseSurfaceParams& params) {
+  return widenedByNoise(params.max_thickness, params.max_thickness_noise_sigmas, params.max_thickness_ceiling,
+                        c.range_noise);
+}
+
+// How far off its surface's fitted line this cell may lie.
+double maxDeviation(const CellMean& c, const SparseSurfaceParams& params) {
+  return widenedByNoise(params.max_deviation, params.max_deviation_noise_sigmas, params.max_deviation_ceiling,
+                        c.range_noise);
+}
+
+// How far off a line this cell may lie and still be on it.
+double onLineTolerance(const CellMean& c, const SparseSurfaceParams& params) { return 2 * maxThickness(c, params); }
 
 // The direction of the line the cells around sparse cell i lie along, when
 // they lie thinly along one that passes through cell i itself.
@@ -108,8 +127,8 @@ std::optional<Eigen::Vector2d> localDirection(std::span<const CellMean> cells, c
   if (n < params.min_neighbours) return std::nullopt;
   const Eigen::Vector2d mean = sum / n;
   const PrincipalAxes axes = principalAxes(products / n - mean * mean.transpose());
-  if (!(std::sqrt(axes.variance_across) <= params.max_thickness)) return std::nullopt;
-  if (!(std::abs(axes.across.dot(mean)) <= onLineTolerance(params))) return std::nullopt;  // the cell off that line
+  if (!(std::sqrt(axes.variance_across) <= maxThickness(cells[i], params))) return std::nullopt;
+  if (!(std::abs(axes.across.dot(mean)) <= onLineTolerance(cells[i], params))) return std::nullopt;  // the cell off that line
   return axes.along;
 }
 
@@ -127,7 +146,8 @@ bool sameSurface(const CellMean& a, const Eigen::Vector2d& a_direction, const Ce
   if (d.squaredNorm() > params.max_gap * params.max_gap) return false;
   if (std::abs(a_direction.dot(b_direction)) < min_cos) return false;
   const auto offLine = [&](const Eigen::Vector2d& direction) { return std::abs(cross(direction, d)); };
-  return offLine(a_direction) <= onLineTolerance(params) && offLine(b_direction) <= onLineTolerance(params);
+  // b off a's line, and a off b's.
+  return offLine(a_direction) <= onLineTolerance(b, params) && offLine(b_direction) <= onLineTolerance(a, params);
 }
 
 // Groups of at least min_cells cells with a local line, joined pairwise by
@@ -166,7 +186,7 @@ std::optional<StraightSegment> fittedSurface(std::span<const CellMean> cells, co
   double first = 0.0, last = 0.0;
   for (const std::size_t i : group) {
     const Eigen::Vector2d offset = cells[i].at - mean;
-    if (std::abs(fit.across.dot(offset)) > params.max_deviation) return std::nullopt;
+    if (std::abs(fit.across.dot(offset)) > maxDeviation(cells[i], params)) return std::nullopt;
     first = std::min(first, fit.along.dot(offset));
     last = std::max(last, fit.along.dot(offset));
   }

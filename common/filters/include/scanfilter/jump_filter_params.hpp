@@ -72,6 +72,7 @@ struct JumpFilterParams {
 struct RangeNoiseModel {
   double base = 0.0;       // m
   double quadratic = 0.0;  // m per m²
+  double sigmaAt(double range) const { return base + quadratic * range * range; }
   bool operator==(const RangeNoiseModel&) const = default;
 };
 

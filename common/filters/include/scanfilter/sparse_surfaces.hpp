@@ -19,20 +19,26 @@ struct SparseSurfaceParams {
   double neighbour_radius = 0.25;  // m, the cells within this of a cell give its local line
   int min_neighbours = 4;          // cells (itself included) a local line needs
   double max_thickness = 0.015;    // m, σ of those cells across their line: thicker is no line; a cell
-                                   // lies on a line within twice this
+                                   // lies on a line within twice this. Where the range noise is larger:
+  double max_thickness_noise_sigmas = 1.5;  // this many σ of it at the cell's range, ...
+  double max_thickness_ceiling = 0.03;      // m, ... up to this
   double max_angle_deg = 10.0;     // degrees: neighbouring local lines this near in direction ...
   double max_gap = 0.30;           // m, ... and this near each other are one surface
-  double max_deviation = 0.03;     // m, every cell of a surface lies this near its fitted line
+  double max_deviation = 0.03;     // m, every cell of a surface lies this near its fitted line; where the
+                                   // range noise is larger:
+  double max_deviation_noise_sigmas = 4.0;  // this many σ of it at the cell's range, ...
+  double max_deviation_ceiling = 0.08;      // m, ... up to this
   int min_cells = 6;               // sparse cells a surface needs
   double min_length = 0.30;        // m a surface needs
 };
 
-// A cell of the cache: which one, the mean of its returns, and whether it
-// holds too few of them to be an obstacle on its own.
+// A cell of the cache: which one, the mean of its returns, whether it holds
+// too few of them to be an obstacle on its own, and the range noise there.
 struct CellMean {
   CellIndex cell;
   Eigen::Vector2d at;
   bool sparse = false;
+  double range_noise = 0.0;  // m, σ of the sensor's range noise at the cell's range (0: not measured)
 };
 
 // The straight surfaces whose sparse cells line up: a pane or a mirror
@@ -44,8 +50,10 @@ struct CellMean {
 // line's direction; two such cells join when within max_gap of each other
 // (a pane's hole, not a doorway), alike in direction and each on the
 // other's line; each group long, full and straight enough is fitted as one
-// surface. Cells must be distinct; those with a non-finite mean are left
-// out.
+// surface. A noisier sensor's returns of one line scatter farther across it,
+// so a cell's thickness and deviation limits widen with its range noise
+// (docs/beyond-the-paper.md, 42). Cells must be distinct; those with a
+// non-finite mean are left out.
 std::vector<StraightSegment> sparseSurfaces(std::span<const CellMean> cells, double cell_size,
                                             const SparseSurfaceParams& params);
 
