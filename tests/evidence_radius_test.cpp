@@ -58,6 +58,16 @@ TEST(EvidenceRadius, ZeroSigmasMeasuresNothing) {
   EXPECT_DOUBLE_EQ(radius.at(6.0), kFloor);
 }
 
+// The sparse-surface search reads the noise (Beyond the paper 42) when the
+// rescue's radius does not follow it: measured, and the radius stays put.
+TEST(EvidenceRadius, MeasuresTheNoiseForAnotherCheckWithZeroSigmas) {
+  EvidenceRadiusParams p = params(0.0);
+  p.measure_noise = true;
+  const EvidenceRadius radius = measuredOn(test::noisyRoomScans(0.006, 0.002, 60), p);
+  EXPECT_NEAR(radius.noise().quadratic, 0.002, 0.0005);
+  EXPECT_DOUBLE_EQ(radius.at(6.0), kFloor);
+}
+
 TEST(EvidenceRadius, GrowsNoFartherThanTheCap) {
   const EvidenceRadius radius = measuredOn(test::noisyRoomScans(0.006, 0.002, 60), params(kSigmas, 0.3));
   EXPECT_DOUBLE_EQ(radius.at(6.0), 0.3) << "5 sigma is 0.39 m there";

@@ -3,6 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace scanfilter {
 namespace {
@@ -62,6 +67,23 @@ TEST(MapPicture, ScaleBarIsARoundLengthAtTheMapsScale) {
   const PngImage coarse = mapPicture({cellsWithOneMarked(1200, 900)}, 0.05, "BUILDING");
   // 20 pixels a metre, a quarter of 1,220 px is 15 m: the bar is 10 m.
   EXPECT_EQ(longestBlackRun(coarse), 200);
+}
+
+// A corridor (20 cells wide) would cut the legend off at the map's width.
+TEST(MapPicture, ANarrowMapsPictureHoldsItsLegendAndItsTitle) {
+  const std::vector<std::pair<Rgb, std::string>> legend = {
+      {{0, 0, 0}, "OCCUPIED"}, {{254, 254, 254}, "FREE"}, {{205, 205, 205}, "UNKNOWN"}};
+  const PngImage corridor = mapPicture({cellsWithOneMarked(20, 150)}, 0.05, "C");
+  EXPECT_GT(corridor.width(), PngImage::legendWidth(legend));
+  const std::string long_title(80, 'T');
+  const PngImage titled = mapPicture({cellsWithOneMarked(20, 150)}, 0.05, long_title);
+  EXPECT_GT(titled.width(), static_cast<int>(long_title.size()) * PngImage::glyphAdvance(2));
+}
+
+TEST(MapPicture, NoMapOrNoCellSizeIsAnError) {
+  EXPECT_THROW(mapPicture({}, 0.05, "NONE"), std::invalid_argument);
+  EXPECT_THROW(mapPicture({cellsWithOneMarked(10, 10)}, 0.0, "ZERO"), std::invalid_argument);
+  EXPECT_THROW(mapPicture({cellsWithOneMarked(10, 10)}, std::nan(""), "NAN"), std::invalid_argument);
 }
 
 }  // namespace

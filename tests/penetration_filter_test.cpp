@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "noisy_room.hpp"
 #include "scan_builder.hpp"
 #include "scanfilter/penetration_evidence.hpp"
 #include "scanfilter/penetration_filter.hpp"
@@ -794,6 +795,25 @@ TEST(PenetrationFilter, SparseSurfacesOfANoisySensorFollowItsMeasuredNoise) {
               off.artefacts, on.artefacts, off.valid, on.valid);
   EXPECT_GT(on.artefacts, off.artefacts + off.artefacts / 20) << "at least 5 % more ghosts found";
   EXPECT_LE(on.valid, off.valid + (on.artefacts - off.artefacts) / 20) << "a valid return per 20 ghosts at most";
+}
+
+// The search's limits need the measured noise without the rescue too.
+TEST(PenetrationFilter, TheNoiseIsMeasuredForTheSparseSurfacesWithoutTheRescue) {
+  const auto noiseMeasured = [](const PenetrationFilterParams& p) {
+    const auto filter = makePenetrationFilter(p, Implementation::kFast);
+    std::vector<std::uint8_t> labels;
+    for (const Scan& scan : test::noisyRoomScans(0.006, 0.002, 20)) {
+      labels.assign(scan.size(), 0);
+      filter->apply(scan, test::noisyRoomSensor(), labels);
+    }
+    return filter->evidenceNoise() != RangeNoiseModel{};
+  };
+  PenetrationFilterParams p;
+  p.rescue_persistent_points = false;
+  EXPECT_TRUE(noiseMeasured(p));
+  p.surface_memory.sparse_surfaces.max_thickness_noise_sigmas = 0.0;
+  p.surface_memory.sparse_surfaces.max_deviation_noise_sigmas = 0.0;
+  EXPECT_FALSE(noiseMeasured(p)) << "nothing reads it";
 }
 
 TEST(PenetrationFilter, GrazingMarginStillRemovesAGhostBehindAWallSeenHeadOn) {

@@ -139,6 +139,41 @@ TEST(SparseSurfaces, TheRangeNoiseWidensTheLimitsNoFartherThanTheirCeilings) {
   EXPECT_LT(lengthFound(surfacesOf(withRangeNoise(pane(0.0, 2.0, 1.0, 0.02), 0.02), at_the_floor)), 0.7);
 }
 
+// Each cell's own noise decides its limits: a noisy pane whose noise was
+// measured only along its first half is found along about that half.
+TEST(SparseSurfaces, EachCellsLimitsFollowItsOwnRangeNoise) {
+  auto cells = pane(0.0, 2.0, 1.0, 0.02);
+  for (CellMean& c : cells) c.range_noise = c.at.x() < 1.0 ? 0.02 : 0.0;
+  const double half = lengthFound(surfacesOf(cells));
+  EXPECT_GT(half, 0.8);
+  EXPECT_LT(half, 1.5);
+}
+
+// A noise that is no number (NaN, infinite) widens nothing: the limits as
+// configured, as for noise not measured.
+TEST(SparseSurfaces, ANoiseThatIsNoNumberWidensNothing) {
+  const auto noisy_pane = pane(0.0, 2.0, 1.0, 0.02);
+  const double quiet = lengthFound(surfacesOf(noisy_pane));
+  EXPECT_EQ(lengthFound(surfacesOf(withRangeNoise(noisy_pane, std::numeric_limits<double>::quiet_NaN()))), quiet);
+  EXPECT_EQ(lengthFound(surfacesOf(withRangeNoise(noisy_pane, std::numeric_limits<double>::infinity()))), quiet);
+}
+
+// A thin pane with one cell 4 cm off its line. A quiet sensor's local
+// lines leave that cell out, and the rest is one surface. With 2 cm of
+// noise the cell joins (its widened thickness lets it), and the fit keeps
+// it within 4 σ (8 cm); with the deviation's ceiling at 3 cm the fit
+// refuses the group it joined.
+TEST(SparseSurfaces, TheDeviationCeilingBoundsHowFarOffItsLineACellMayLie) {
+  auto cells = pane(0.0, 2.0, 1.0);
+  cells[20].at.y() = 1.04;
+  cells[20].cell.y = floorToInt(1.04 / kCell);
+  EXPECT_EQ(surfacesOf(cells).size(), 1u);
+  EXPECT_EQ(surfacesOf(withRangeNoise(cells, 0.02)).size(), 1u);
+  SparseSurfaceParams low_ceiling;
+  low_ceiling.max_deviation_ceiling = 0.03;
+  EXPECT_TRUE(surfacesOf(withRangeNoise(cells, 0.02), low_ceiling).empty());
+}
+
 TEST(SparseSurfaces, TooShortOrTooFewCellsIsNoSurface) {
   // Six cells over 0.25 m: enough cells, too short; long enough at 0.2 m.
   EXPECT_TRUE(surfacesOf(pane(0.0, 0.30, 1.0)).empty());

@@ -10,7 +10,7 @@ namespace scanfilter {
 EvidenceRadius::EvidenceRadius(const EvidenceRadiusParams& params) : params_(params) {}
 
 void EvidenceRadius::measure(const Scan& scan, const SensorInfo& sensor) {
-  if (!(params_.noise_sigmas > 0.0)) return;
+  if (!(params_.noise_sigmas > 0.0) && !params_.measure_noise) return;
   // The estimate's bands run from the sensor to its range_max: without a
   // finite positive one there is nothing to size them by (NaN fails both).
   if (!(std::isfinite(sensor.range_max) && sensor.range_max > 0.0)) return;

@@ -30,11 +30,13 @@ PenetrationFilter::PenetrationFilter(const PenetrationFilterParams& params)
       memory_(params.surface_memory),
       mirror_ghosts_(params.surface_memory.mirror_ghosts),
       // Every count it sizes is the rescue's evidence: without the rescue
-      // nothing asks, and the noise is not measured.
+      // nothing asks. The noise it measures also widens the sparse-surface
+      // search's limits (42), which needs it with or without the rescue.
       evidence_radius_({.min_radius = params.rescue_radius,
                         .noise_sigmas = params.rescue_persistent_points ? params.evidence_noise_sigmas : 0.0,
                         .max_radius = params.evidence_radius_max,
-                        .sampling = params.evidence_noise_sampling}) {}
+                        .sampling = params.evidence_noise_sampling,
+                        .measure_noise = followsRangeNoise(params.surface_memory.sparse_surfaces)}) {}
 
 void PenetrationFilter::apply(const Scan& scan, const SensorInfo& sensor,
                               std::span<std::uint8_t> labels) {

@@ -51,7 +51,11 @@ bool PenetrationFilter::dropCellsSeenBeyond(const SurfaceMemory& surfaces, std::
   // Only the sparse cells on the surfaces found are asked: the others could
   // change what is found only as neighbours, and asking every cached run
   // about every sparse cell cost as much as the search itself.
-  const double tolerance = params_.surface_memory.sparse_surfaces.max_deviation + grid_.cellSize();
+  // As far off a found surface as its cells may lie: the deviation limit
+  // and a cell, or as far as the noise may widen that limit (42).
+  const SparseSurfaceParams& sparse = params_.surface_memory.sparse_surfaces;
+  double tolerance = sparse.max_deviation + grid_.cellSize();
+  if (sparse.max_deviation_noise_sigmas > 0.0) tolerance = std::max(tolerance, sparse.max_deviation_ceiling);
   const auto onAFoundSurface = [&](const Eigen::Vector2d& p) {
     return std::any_of(found.begin(), found.end(), [&](const StraightSegment& s) {
       return distanceToSegment(p, s.a, s.b) <= tolerance;

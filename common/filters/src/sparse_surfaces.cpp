@@ -90,6 +90,9 @@ int cellsWithin(double distance, double cell_size) { return static_cast<int>(std
 // than `limit`, but no more than `ceiling` (beyond it a leg's blob or a
 // scatter of mixed returns would pass for a line).
 double widenedByNoise(double limit, double sigmas, double ceiling, double range_noise) {
+  // Noise not measured (0), or not a number a sensor could have: the limit
+  // as configured, not the ceiling std::min would give for NaN.
+  if (!(range_noise > 0.0 && std::isfinite(range_noise))) return limit;
   return std::max(limit, std::min(ceiling, sigmas * range_noise));
 }
 
@@ -128,7 +131,8 @@ std::optional<Eigen::Vector2d> localDirection(std::span<const CellMean> cells, c
   const Eigen::Vector2d mean = sum / n;
   const PrincipalAxes axes = principalAxes(products / n - mean * mean.transpose());
   if (!(std::sqrt(axes.variance_across) <= maxThickness(cells[i], params))) return std::nullopt;
-  if (!(std::abs(axes.across.dot(mean)) <= onLineTolerance(cells[i], params))) return std::nullopt;  // the cell off that line
+  // The cell itself off that line.
+  if (!(std::abs(axes.across.dot(mean)) <= onLineTolerance(cells[i], params))) return std::nullopt;
   return axes.along;
 }
 

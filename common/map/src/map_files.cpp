@@ -14,9 +14,6 @@ namespace scanfilter {
 
 namespace {
 
-constexpr int kPgmOccupied = 0;
-constexpr int kPgmFree = 254;
-constexpr int kPgmUnknown = 205;
 constexpr char kStateMagic[8] = {'S', 'F', 'M', 'A', 'P', '0', '0', '1'};
 
 // Writes through a temporary file and renames it into place.
@@ -35,11 +32,11 @@ void writeAtomically(const std::string& path, Write&& write) {
 
 int pgmValue(const OccupancyGrid& grid, CellIndex c) {
   const float l = grid.logOdds(c);
-  if (l == 0.0f) return kPgmUnknown;
+  if (l == 0.0f) return MapServerGrey::kUnknown;
   const double p = grid.probability(c);
-  if (p > grid.params().occupied_threshold) return kPgmOccupied;
-  if (p < grid.params().free_threshold) return kPgmFree;
-  return kPgmUnknown;
+  if (p > grid.params().occupied_threshold) return MapServerGrey::kOccupied;
+  if (p < grid.params().free_threshold) return MapServerGrey::kFree;
+  return MapServerGrey::kUnknown;
 }
 
 }  // namespace
@@ -76,7 +73,8 @@ void saveMap(const OccupancyGrid& grid, const std::string& base, const std::stri
         << "occupied_thresh: " << grid.params().occupied_threshold << "\n"
         << "free_thresh: " << grid.params().free_threshold << "\n";
   });
-  mapPicture({mapImage(grid, box)}, grid.params().resolution, title).save(base + ".png");  // renamed in place
+  // PngImage::save writes BASE.png.partial and renames it, as the files above.
+  mapPicture({mapImage(grid, box)}, grid.params().resolution, title).save(base + ".png");
   writeAtomically(base + ".logodds", [&](std::ofstream& out) {
     out.write(kStateMagic, sizeof kStateMagic);
     const double resolution = grid.params().resolution;

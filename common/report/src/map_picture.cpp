@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
+#include <stdexcept>
+#include <utility>
 
 namespace scanfilter {
 
@@ -15,7 +18,10 @@ constexpr int kMinLongerSide = 800;
 constexpr int kMaxPixelsPerCell = 8;
 constexpr int kTextScale = 2;
 constexpr int kMargin = 10;
-constexpr int kBandHeight = 7 * kTextScale + 2 * kMargin;  // one line of text and its margins
+// A band holds one line of text (the title, the legend, the scale bar's
+// label) and its margins; the picture has three besides the maps.
+const int kBandHeight = PngImage::glyphHeight(kTextScale) + 2 * kMargin;
+constexpr int kBands = 3;
 constexpr int kScaleBarThickness = 6;
 // The scale bar's length: the longest of these (metres) that fits in a
 // quarter of the picture.
@@ -24,10 +30,15 @@ constexpr double kScaleBarShareOfWidth = 0.25;
 // The frame is pale blue, so that the white swatch of free space shows on it.
 constexpr Rgb kFrameColour = {215, 225, 240};
 constexpr Rgb kTextColour = {0, 0, 0};
-// map_server's trinary grey levels, as the map's raster draws them.
-constexpr Rgb kOccupiedColour = {0, 0, 0};
-constexpr Rgb kFreeColour = {254, 254, 254};
-constexpr Rgb kUnknownColour = {205, 205, 205};
+
+Rgb grey(std::uint8_t level) { return {level, level, level}; }
+
+const std::vector<std::pair<Rgb, std::string>>& legendEntries() {
+  static const std::vector<std::pair<Rgb, std::string>> entries = {{grey(MapServerGrey::kOccupied), "OCCUPIED"},
+                                                                    {grey(MapServerGrey::kFree), "FREE"},
+                                                                    {grey(MapServerGrey::kUnknown), "UNKNOWN"}};
+  return entries;
+}
 
 PngImage scaledUp(const PngImage& cells, int factor) {
   PngImage out(cells.width() * factor, cells.height() * factor);
@@ -43,44 +54,52 @@ std::string metres(double m) {
   return text;
 }
 
-void drawScaleBar(PngImage& image, int x, int y, double pixels_per_metre) {
+// The bar and its label, centred in the band whose top is `band_top`.
+void drawScaleBar(PngImage& image, int band_top, double pixels_per_metre) {
   const double fits = kScaleBarShareOfWidth * image.width() / pixels_per_metre;
   double length = kScaleBarLengths.front();
   for (double candidate : kScaleBarLengths)
     if (candidate <= fits) length = candidate;
-  const int pixels = std::max(1, static_cast<int>(length * pixels_per_metre + 0.5));
-  image.fillRect(x, y, x + pixels - 1, y + kScaleBarThickness - 1, kTextColour);
-  image.text(x + pixels + kMargin, y - (7 * kTextScale - kScaleBarThickness) / 2, metres(length), kTextColour,
-             kTextScale);
+  const int pixels = std::max(1, static_cast<int>(std::lround(length * pixels_per_metre)));
+  const int bar_top = band_top + (kBandHeight - kScaleBarThickness) / 2;
+  image.fillRect(kMargin, bar_top, kMargin + pixels - 1, bar_top + kScaleBarThickness - 1, kTextColour);
+  image.text(2 * kMargin + pixels, band_top + kMargin, metres(length), kTextColour, kTextScale);
+}
+
+// Wide enough for the maps, the title, the legend and the longest scale
+// bar's label however narrow the maps.
+int pictureWidth(int maps_width, const std::string& title) {
+  const int title_width = static_cast<int>(title.size()) * PngImage::glyphAdvance(kTextScale);
+  const int legend_width = PngImage::legendWidth(legendEntries(), kTextScale);
+  return std::max({maps_width, title_width, legend_width}) + 2 * kMargin;
 }
 
 }  // namespace
 
 PngImage mapPicture(const std::vector<PngImage>& panels, double cell_size, const std::string& title) {
+  if (panels.empty()) throw std::invalid_argument("mapPicture: no map to draw");
+  if (!(cell_size > 0.0 && std::isfinite(cell_size)))
+    throw std::invalid_argument("mapPicture: cell size " + std::to_string(cell_size) + " m is not a positive number");
   int longer = 1, height = 1;
   for (const PngImage& cells : panels) longer = std::max({longer, cells.width(), cells.height()});
   const int factor = std::clamp(kMinLongerSide / longer, 1, kMaxPixelsPerCell);
   std::vector<PngImage> maps;
-  int maps_width = 0;
+  int maps_width = -kMargin;  // a margin between two maps, none after the last
   for (const PngImage& cells : panels) {
     maps.push_back(scaledUp(cells, factor));
     maps_width += maps.back().width() + kMargin;
     height = std::max(height, maps.back().height());
   }
-  // Wide enough for the title and the legend however narrow the maps.
-  const int min_width = 2 * kMargin + static_cast<int>(title.size()) * PngImage::glyphAdvance(kTextScale);
-  PngImage image(std::max(maps_width + kMargin, min_width), height + 3 * kBandHeight, kFrameColour);
+  PngImage image(pictureWidth(maps_width, title), height + kBands * kBandHeight, kFrameColour);
   image.text(kMargin, kMargin, title, kTextColour, kTextScale);
   int x = kMargin;
   for (const PngImage& map : maps) {
     image.paste(map, x, kBandHeight);
     x += map.width() + kMargin;
   }
-  const int below = kBandHeight + height + kMargin;
-  image.legend(kMargin, below, {{kOccupiedColour, "OCCUPIED"}, {kFreeColour, "FREE"}, {kUnknownColour, "UNKNOWN"}},
-               kTextColour, kTextScale);
-  drawScaleBar(image, kMargin, below + kBandHeight + (7 * kTextScale - kScaleBarThickness) / 2,
-               factor / cell_size);
+  const int legend_band_top = kBandHeight + height;
+  image.legend(kMargin, legend_band_top + kMargin, legendEntries(), kTextColour, kTextScale);
+  drawScaleBar(image, legend_band_top + kBandHeight, factor / cell_size);
   return image;
 }
 

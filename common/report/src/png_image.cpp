@@ -51,6 +51,11 @@ constexpr int kSwatchSize = 14;
 constexpr int kSwatchToText = 22;
 constexpr int kLegendEntryGap = 18;
 
+// How far one legend entry reaches: its swatch, its name, the gap to the next.
+int legendEntryAdvance(const std::string& name, int scale) {
+  return kSwatchToText + kLegendEntryGap + static_cast<int>(name.size()) * kGlyphAdvance * scale;
+}
+
 const Glyph* findGlyph(char c) {
   if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
   for (const auto& g : kFont)
@@ -99,6 +104,7 @@ void PngImage::line(int x0, int y0, int x1, int y1, Rgb colour) {
 }
 
 int PngImage::glyphAdvance(int scale) { return kGlyphAdvance * scale; }
+int PngImage::glyphHeight(int scale) { return kGlyphHeight * scale; }
 
 void PngImage::text(int x, int y, const std::string& s, Rgb colour, int scale) {
   for (char c : s) {
@@ -117,8 +123,14 @@ void PngImage::legend(int x, int y, const std::vector<std::pair<Rgb, std::string
   for (const auto& [colour, name] : entries) {
     fillRect(x, y, x + kSwatchSize, y + kSwatchSize, colour);
     text(x + kSwatchToText, y, name, text_colour, scale);
-    x += kSwatchToText + kLegendEntryGap + static_cast<int>(name.size()) * kGlyphAdvance * scale;
+    x += legendEntryAdvance(name, scale);
   }
+}
+
+int PngImage::legendWidth(const std::vector<std::pair<Rgb, std::string>>& entries, int scale) {
+  int width = 0;
+  for (const auto& [colour, name] : entries) width += legendEntryAdvance(name, scale);
+  return entries.empty() ? 0 : width - kLegendEntryGap;
 }
 
 void PngImage::paste(const PngImage& other, int x, int y) {

@@ -20,6 +20,9 @@ struct EvidenceRadiusParams {
   double noise_sigmas = 0.0;    // the radius is at least this many σ(range); 0: min_radius everywhere
   double max_radius = 0.0;      // m, and at most this (at least min_radius)
   RangeNoiseSampling sampling;  // how the noise is measured
+  // Measure the noise even where noise_sigmas is 0: another check reads
+  // noise() (the sparse-surface search, docs/beyond-the-paper.md, 42).
+  bool measure_noise = false;
 };
 
 // Beyond the paper (docs/beyond-the-paper.md, 33): how far around a

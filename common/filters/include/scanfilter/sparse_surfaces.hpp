@@ -19,7 +19,8 @@ struct SparseSurfaceParams {
   double neighbour_radius = 0.25;  // m, the cells within this of a cell give its local line
   int min_neighbours = 4;          // cells (itself included) a local line needs
   double max_thickness = 0.015;    // m, σ of those cells across their line: thicker is no line; a cell
-                                   // lies on a line within twice this. Where the range noise is larger:
+                                   // lies on a line within twice this (as widened). Where the range noise
+                                   // is larger (a ceiling below the limit widens nothing):
   double max_thickness_noise_sigmas = 1.5;  // this many σ of it at the cell's range, ...
   double max_thickness_ceiling = 0.03;      // m, ... up to this
   double max_angle_deg = 10.0;     // degrees: neighbouring local lines this near in direction ...
@@ -40,6 +41,12 @@ struct CellMean {
   bool sparse = false;
   double range_noise = 0.0;  // m, σ of the sensor's range noise at the cell's range (0: not measured)
 };
+
+// Whether the search's limits widen with the range noise: it must then be
+// measured.
+inline bool followsRangeNoise(const SparseSurfaceParams& params) {
+  return params.enabled && (params.max_thickness_noise_sigmas > 0.0 || params.max_deviation_noise_sigmas > 0.0);
+}
 
 // The straight surfaces whose sparse cells line up: a pane or a mirror
 // returns a beam only now and then (near its normal, or a few per cent of

@@ -13,7 +13,7 @@ namespace scanfilter {
 // name and renamed, so a crash never leaves a torn file. `note` (text, e.g.
 // which scans the map holds) is stored in BASE.logodds after the cells: it
 // is replaced in the same rename as the state it describes. `title` heads
-// the picture (upper case: its font has no lower case).
+// the picture (drawn in capitals; letters, digits and .,-:/%()=+_ only).
 void saveMap(const OccupancyGrid& grid, const std::string& base, const std::string& note = {},
              const std::string& title = "OCCUPANCY MAP");
 

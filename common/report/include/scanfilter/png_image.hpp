@@ -24,9 +24,12 @@ class PngImage {
   // Upper-case text in a 5x7 pixel font, `scale` pixels per font pixel.
   // Each character takes glyphAdvance(scale) pixels across.
   static int glyphAdvance(int scale);
+  static int glyphHeight(int scale);
   void text(int x, int y, const std::string& s, Rgb colour, int scale = 2);
   // A row of colour swatches, each followed by its name.
   void legend(int x, int y, const std::vector<std::pair<Rgb, std::string>>& entries, Rgb text_colour, int scale = 2);
+  // How wide legend() draws those entries, in pixels.
+  static int legendWidth(const std::vector<std::pair<Rgb, std::string>>& entries, int scale = 2);
   // Pastes another image with its top-left corner at (x, y).
   void paste(const PngImage& other, int x, int y);
 
