@@ -125,7 +125,7 @@ void prChart(const std::string& path, const std::string& title, const std::vecto
   chart.draw().save(path);
 }
 
-// The window of kFigureFrames scans showing most of both artefact kinds:
+// The window of `frames` scans showing most of both artefact kinds:
 // ranked by the rarer kind's count in the truth, then by the total.
 std::size_t busiestWindow(const sim::LabelledLog& log, std::size_t frames) {
   const auto count = [](const Scan& scan, PointCode c) {

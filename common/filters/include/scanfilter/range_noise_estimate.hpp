@@ -35,8 +35,9 @@ namespace scanfilter {
 // larger: the estimate widens step 1's tolerances for a noisier sensor and
 // never narrows them. Narrowing was measured and not kept
 // (docs/beyond-the-paper.md, 18): on the real SICK logs the default's wide
-// far tolerance also absorbs what is not noise (clutter that is not a straight line at 1°), and
-// narrowing it removed more returns seen again from elsewhere. With fewer
+// far tolerance also absorbs what is not noise (clutter that is not a
+// straight line at 1°), and narrowing it removed more returns seen again
+// from elsewhere. With fewer
 // than two bands the configured model stays. Step 2 measures with a zero
 // floor: the measured model alone (evidence_radius.hpp).
 class RangeNoiseEstimate {
