@@ -99,6 +99,8 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(sm.mirror_ghosts.line_window, dm.mirror_ghosts.line_window);
   EXPECT_EQ(sm.mirror_ghosts.line_tolerance, dm.mirror_ghosts.line_tolerance);
   EXPECT_EQ(sm.mirror_ghosts.line_spread, dm.mirror_ghosts.line_spread);
+  EXPECT_EQ(sm.mirror_ghosts.crossing_band, dm.mirror_ghosts.crossing_band);
+  EXPECT_EQ(sm.mirror_ghosts.beyond_proven_mirrors, dm.mirror_ghosts.beyond_proven_mirrors);
   EXPECT_EQ(sm.segments.max_spacing, dm.segments.max_spacing);
   EXPECT_EQ(sm.segments.max_deviation, dm.segments.max_deviation);
   EXPECT_EQ(sm.segments.min_returns, dm.segments.min_returns);
@@ -160,7 +162,7 @@ TEST(FilterConfig, ReadsTheMirrorGhostKeys) {
   const FilterConfig c = parseFilterConfig(
       "penetration_filter:\n  surface_memory:\n    specular_min_pass_share: 0.7\n    mirror_ghosts:\n"
       "      enabled: false\n      image_radius: 0.05\n      line_window: 0.4\n      line_tolerance: 0.03\n"
-      "      line_spread: 0.2\n",
+      "      line_spread: 0.2\n      crossing_band: 0.15\n      beyond_proven_mirrors: false\n",
       "f.yaml");
   const SurfaceMemoryParams& m = c.params.penetration.surface_memory;
   EXPECT_EQ(m.specular_min_pass_share, 0.7);
@@ -169,6 +171,8 @@ TEST(FilterConfig, ReadsTheMirrorGhostKeys) {
   EXPECT_EQ(m.mirror_ghosts.line_window, 0.4);
   EXPECT_EQ(m.mirror_ghosts.line_tolerance, 0.03);
   EXPECT_EQ(m.mirror_ghosts.line_spread, 0.2);
+  EXPECT_EQ(m.mirror_ghosts.crossing_band, 0.15);
+  EXPECT_FALSE(m.mirror_ghosts.beyond_proven_mirrors);
 }
 
 TEST(FilterConfig, ReadsTheThinObjectDepthStep) {
@@ -311,7 +315,7 @@ TEST(FilterConfigErrors, NameFileLineAndKey) {
             "got 90");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    mirror_ghosts:\n      radius: 0.1\n"),
             "f.yaml:4: penetration_filter.surface_memory.mirror_ghosts.radius: unknown key (expected one of "
-            "crossing_band, enabled, image_radius, line_spread, line_tolerance, line_window)");
+            "beyond_proven_mirrors, crossing_band, enabled, image_radius, line_spread, line_tolerance, line_window)");
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    head_on_through_beams: -1\n"),
             "f.yaml:3: penetration_filter.surface_memory.head_on_through_beams: expected an integer >= 0 (0: never "
             "forget so), got -1");

@@ -105,5 +105,30 @@ TEST(MirrorGhostCheck, TheLinesSpreadIsAParameter) {
   EXPECT_TRUE(check.isGhost(crossingAt(2.0, {2.0, -1.5}, false), grid));
 }
 
+// Beyond the paper 43 asks only whether the mirror is there: a return
+// through a pane has no image on anything.
+TEST(MirrorGhostCheck, TheMirrorIsThereOnItsStretchAndWhereTheCachesReturnsContinueIt) {
+  const Eigen::Vector2d image_on_nothing{2.0, -1.5};
+  PenetrationGrid grid(kCell, kObstacleThreshold);
+  const MirrorCrossing past_the_stretch = crossingAt(2.0, image_on_nothing, false);
+  const MirrorGhostCheck check({});
+  EXPECT_TRUE(check.mirrorThere(crossingAt(2.0, image_on_nothing, true), grid)) << "on the stretch";
+  EXPECT_FALSE(check.mirrorThere(past_the_stretch, grid)) << "nothing along the line";
+  addReturns(grid, {1.93, 0.01}, 1);
+  addReturns(grid, {2.08, -0.02}, 1);
+  EXPECT_TRUE(check.mirrorThere(past_the_stretch, grid));
+  EXPECT_FALSE(check.isGhost(past_the_stretch, grid)) << "no ghost: its image lies on nothing";
+}
+
+TEST(MirrorGhostCheck, MarksBeyondProvenMirrorsOnlyWithTheTestOn) {
+  MirrorGhostParams params;
+  EXPECT_TRUE(MirrorGhostCheck(params).marksBeyondProvenMirrors());
+  params.enabled = false;
+  EXPECT_FALSE(MirrorGhostCheck(params).marksBeyondProvenMirrors()) << "no ghost found, none proven";
+  params.enabled = true;
+  params.beyond_proven_mirrors = false;
+  EXPECT_FALSE(MirrorGhostCheck(params).marksBeyondProvenMirrors());
+}
+
 }  // namespace
 }  // namespace scanfilter

@@ -648,6 +648,35 @@ TEST(SurfaceMemory, AReturnBeyondAMirrorsLineIsMirroredAcrossIt) {
                                             [](const MirrorCrossing&) { return true; }));
 }
 
+// Beyond the paper 43 asks which mirror a crossing was of: the ghost found
+// in one proves that one alone.
+TEST(SurfaceMemory, ACrossingSaysWhichMirrorItWasOf) {
+  SurfaceMemory memory(panesRememberedLonger());
+  const std::vector<StraightSegment> two_lines = {{{-1.0, 1.0}, {1.0, 1.0}, false, false},
+                                                  {{-1.0, -1.0}, {1.0, -1.0}, false, false}};
+  memory.rememberSegments(two_lines, kOrigin, at(0.0), 0.0);
+  // Each faced head-on: returns on it, beams through it beyond its lobe.
+  for (const double side : {1.0, -1.0}) {
+    std::vector<Eigen::Vector2d> frame = {{0.0, side}};
+    for (double x : {-2.4, -1.8, 1.8, 2.4}) frame.emplace_back(x, 3.0 * side);
+    memory.confirmPanesAndMirrors(frame, usableReturns(frame), kOrigin);
+  }
+  const auto surfaceCrossedBy = [&](const Eigen::Vector2d& p) {
+    std::optional<std::size_t> surface;
+    memory.anyMirrorCrossed(kOrigin, p, at(1.0), 0.16, [&](const MirrorCrossing& c) {
+      surface = c.surface;
+      return true;
+    });
+    return surface;
+  };
+  const std::optional<std::size_t> ahead = surfaceCrossedBy({0.5, 2.0});
+  const std::optional<std::size_t> ahead_past_its_end = surfaceCrossedBy({3.0, 2.0});
+  const std::optional<std::size_t> behind = surfaceCrossedBy({0.5, -2.0});
+  ASSERT_TRUE(ahead && ahead_past_its_end && behind);
+  EXPECT_EQ(*ahead, *ahead_past_its_end);
+  EXPECT_NE(*ahead, *behind);
+}
+
 TEST(SurfaceMemory, AConfirmedPaneStaysOneWhenSeenAgainAsASparseLine) {
   SurfaceMemory memory = memoryOfASparseLine(panesRememberedLonger());
   const auto head_on = aFrameFacing({0.0});

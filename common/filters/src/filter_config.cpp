@@ -106,6 +106,7 @@ void readMirrorGhosts(const YamlSection& parent, MirrorGhostParams& g) {
   s.read("line_tolerance", g.line_tolerance);
   s.read("line_spread", g.line_spread);
   s.read("crossing_band", g.crossing_band);
+  s.read("beyond_proven_mirrors", g.beyond_proven_mirrors);
   s.requireRange("image_radius", g.image_radius, 1e-3, 1.0, "0.001 <= value <= 1 (m)");
   s.requireRange("line_window", g.line_window, 1e-3, 10.0, "0.001 <= value <= 10 (m)");
   s.requireRange("line_tolerance", g.line_tolerance, 0.0, 1.0, "0 <= value <= 1 (m)");

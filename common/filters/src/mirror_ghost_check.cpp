@@ -8,7 +8,11 @@ namespace scanfilter {
 
 bool MirrorGhostCheck::isGhost(const MirrorCrossing& crossing, const PenetrationGrid& grid) const {
   // The image first: its search is the smaller.
-  return imageOnObstacle(crossing.image, grid) && (crossing.within_segment || lineGoesOn(crossing, grid));
+  return imageOnObstacle(crossing.image, grid) && mirrorThere(crossing, grid);
+}
+
+bool MirrorGhostCheck::mirrorThere(const MirrorCrossing& crossing, const PenetrationGrid& grid) const {
+  return crossing.within_segment || lineGoesOn(crossing, grid);
 }
 
 bool MirrorGhostCheck::lineGoesOn(const MirrorCrossing& crossing, const PenetrationGrid& grid) const {

@@ -179,8 +179,11 @@ bool PenetrationFilter::obstacleBehindInFootprint(const Eigen::Vector2d& origin,
 
 void PenetrationFilter::markBeyondRememberedSurfaces(Stamp stamp, const Eigen::Vector2d& origin,
                                                      std::span<std::uint8_t> labels) const {
+  std::vector<std::size_t> proven;  // the mirrors a ghost was found in
   const std::function<bool(const MirrorCrossing&)> ghost = [&](const MirrorCrossing& crossing) {
-    return mirror_ghosts_.isGhost(crossing, grid_);
+    if (!mirror_ghosts_.isGhost(crossing, grid_)) return false;
+    proven.push_back(crossing.surface);
+    return true;
   };
   const auto isMirrorGhost = [&](const Eigen::Vector2d& p) {
     return mirror_ghosts_.enabled() &&
@@ -189,6 +192,26 @@ void PenetrationFilter::markBeyondRememberedSurfaces(Stamp stamp, const Eigen::V
   for (std::size_t i = 0; i < labels.size(); ++i) {
     if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid)) continue;
     if (memory_.liesBeyondASurface(origin, points_[i], stamp) || isMirrorGhost(points_[i]))
+      labels[i] = static_cast<std::uint8_t>(PointCode::kMisdetected);
+  }
+  if (proven.empty() || !mirror_ghosts_.marksBeyondProvenMirrors()) return;
+  std::sort(proven.begin(), proven.end());
+  proven.erase(std::unique(proven.begin(), proven.end()), proven.end());
+  markBeyondProvenMirrors(stamp, origin, proven, labels);
+}
+
+void PenetrationFilter::markBeyondProvenMirrors(Stamp stamp, const Eigen::Vector2d& origin,
+                                                const std::vector<std::size_t>& proven,
+                                                std::span<std::uint8_t> labels) const {
+  // As deep beyond the line as a ghost must be: nearer, a return may be the
+  // mirror's own, scattered by noise, or its frame's.
+  const std::function<bool(const MirrorCrossing&)> through_proven = [&](const MirrorCrossing& crossing) {
+    return std::binary_search(proven.begin(), proven.end(), crossing.surface) &&
+           mirror_ghosts_.mirrorThere(crossing, grid_);
+  };
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid)) continue;
+    if (memory_.anyMirrorCrossed(origin, points_[i], stamp, mirror_ghosts_.minDepthBeyondLine(), through_proven))
       labels[i] = static_cast<std::uint8_t>(PointCode::kMisdetected);
   }
 }

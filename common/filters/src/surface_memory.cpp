@@ -135,13 +135,16 @@ bool SurfaceMemory::liesBeyondASurface(const Eigen::Vector2d& origin, const Eige
 bool SurfaceMemory::anyMirrorCrossed(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now,
                                      double min_depth, const std::function<bool(const MirrorCrossing&)>& pred) const {
   const double range = (p - origin).norm();
-  return std::any_of(segments_.begin(), segments_.end(), [&](const Segment& s) {
-    if (!s.pane_or_mirror || !alive(s, now)) return false;
+  for (std::size_t k = 0; k < segments_.size(); ++k) {
+    const Segment& s = segments_[k];
+    if (!s.pane_or_mirror || !alive(s, now)) continue;
     const double beyond = s.normal.dot(p - s.a);
-    if (!(std::abs(beyond) >= min_depth + driftMargin(s, range))) return false;  // on the line (NaN too)
+    if (!(std::abs(beyond) >= min_depth + driftMargin(s, range))) continue;  // on the line (NaN too)
     const std::optional<double> along = s.crossingAlong(origin, p);  // nullopt: p on the sensor's side
-    return along && pred({s.a + s.unit * *along, s.unit, p - 2.0 * beyond * s.normal, s.insideEnds(*along)});
-  });
+    if (along && pred({s.a + s.unit * *along, s.unit, p - 2.0 * beyond * s.normal, s.insideEnds(*along), k}))
+      return true;
+  }
+  return false;
 }
 
 bool SurfaceMemory::seenThroughHeadOn(const Segment& s, std::span<const Eigen::Vector2d> points,

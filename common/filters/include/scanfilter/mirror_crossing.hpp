@@ -1,4 +1,6 @@
 #pragma once
+#include <cstddef>
+
 #include <Eigen/Core>
 
 namespace scanfilter {
@@ -10,6 +12,9 @@ struct MirrorCrossing {
   Eigen::Vector2d unit;    // the line's direction
   Eigen::Vector2d image;   // the return mirrored across the line
   bool within_segment;     // the crossing lies on the remembered stretch, inside its end margins
+  // Which remembered pane or mirror: the same number for every crossing of
+  // it while the memory is unchanged (a frame's judging), not beyond.
+  std::size_t surface = 0;
 };
 
 }  // namespace scanfilter

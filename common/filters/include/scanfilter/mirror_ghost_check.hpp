@@ -26,6 +26,13 @@ namespace scanfilter {
 // Without that, the image of a wall that meets the line at right angles is
 // that wall itself, and the rooms of a building mirror each other across
 // their walls.
+//
+// Beyond the paper 43: a ghost the test finds proves that its pane or
+// mirror reflects the beam now, from where the frame was taken. Every other
+// return of that frame beyond it, where it is there, was reflected by it or
+// passed through it (a pane's transmitted returns are real surfaces: their
+// images lie on nothing). Without a ghost, a remembered line with the
+// cache's returns along it could be a wall's edge or a doorway's jamb.
 class MirrorGhostCheck {
  public:
   explicit MirrorGhostCheck(const MirrorGhostParams& params) : params_(params) {}
@@ -40,6 +47,11 @@ class MirrorGhostCheck {
   // mirror is there (the remembered stretch, or a line the cache's returns
   // continue it along) and the image lies on an obstacle of `grid`.
   bool isGhost(const MirrorCrossing& crossing, const PenetrationGrid& grid) const;
+  // Whether the frame's other returns beyond a mirror it found a ghost in go too (43).
+  bool marksBeyondProvenMirrors() const { return params_.enabled && params_.beyond_proven_mirrors; }
+  // Whether the mirror is there where the beam crossed its line: on the
+  // remembered stretch, or where the cache's returns continue it.
+  bool mirrorThere(const MirrorCrossing& crossing, const PenetrationGrid& grid) const;
 
  private:
   bool lineGoesOn(const MirrorCrossing& crossing, const PenetrationGrid& grid) const;

@@ -12,6 +12,9 @@ struct MirrorGhostParams {
   double line_tolerance = 0.04;  // m, ... and this near the mirror's line ...
   double line_spread = 0.10;     // m, ... spread this far along it, on both sides, show that the mirror goes on
   double crossing_band = 0.12;   // m, a return this near the line beside a line return: a surface crossing it there
+  // Beyond the paper 43: a pane or mirror a frame sees a ghost in reflects
+  // now, and the frame's returns beyond it where it is there go too.
+  bool beyond_proven_mirrors = true;
 };
 
 }  // namespace scanfilter
