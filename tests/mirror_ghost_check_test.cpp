@@ -3,6 +3,8 @@
 // past the remembered stretch, when the cache's returns continue the line
 // on both sides of the crossing and are no surface crossing it.
 #include <cmath>
+#include <cstddef>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -19,8 +21,8 @@ constexpr int kObstacleThreshold = 2;  // a cell of 3 returns is an obstacle
 
 // A mirror along the x axis; the beam crossed it at (x, 0), its return
 // mirrored to `image`.
-MirrorCrossing crossingAt(double x, const Eigen::Vector2d& image, bool within_segment) {
-  return {{x, 0.0}, {1.0, 0.0}, image, within_segment};
+MirrorCrossing crossingAt(double x, const Eigen::Vector2d& image, bool within_segment, std::size_t surface = 0) {
+  return {{x, 0.0}, {1.0, 0.0}, image, within_segment, surface};
 }
 
 void addReturns(PenetrationGrid& grid, const Eigen::Vector2d& p, int count) {
@@ -117,7 +119,24 @@ TEST(MirrorGhostCheck, TheMirrorIsThereOnItsStretchAndWhereTheCachesReturnsConti
   addReturns(grid, {1.93, 0.01}, 1);
   addReturns(grid, {2.08, -0.02}, 1);
   EXPECT_TRUE(check.mirrorThere(past_the_stretch, grid));
-  EXPECT_FALSE(check.isGhost(past_the_stretch, grid)) << "no ghost: its image lies on nothing";
+}
+
+// The ghost found in one mirror proves that one alone.
+TEST(MirrorGhostCheck, ABeamWentThroughAProvenMirrorOnlyWhereThatMirrorIsThere) {
+  const MirrorGhostCheck check({});
+  const Eigen::Vector2d image_on_nothing{2.0, -1.5};
+  PenetrationGrid grid(kCell, kObstacleThreshold);
+  const std::vector<bool> second_proven = {false, true};
+  EXPECT_TRUE(check.seenThroughProven(crossingAt(2.0, image_on_nothing, true, 1), second_proven, grid));
+  EXPECT_FALSE(check.seenThroughProven(crossingAt(2.0, image_on_nothing, true, 0), second_proven, grid))
+      << "the first mirror: no ghost found in it";
+  EXPECT_FALSE(check.seenThroughProven(crossingAt(2.0, image_on_nothing, true, 2), second_proven, grid))
+      << "a mirror the frame did not know";
+  EXPECT_FALSE(check.seenThroughProven(crossingAt(2.0, image_on_nothing, false, 1), second_proven, grid))
+      << "past its stretch, nothing along the line";
+  addReturns(grid, {1.93, 0.01}, 1);
+  addReturns(grid, {2.08, -0.02}, 1);
+  EXPECT_TRUE(check.seenThroughProven(crossingAt(2.0, image_on_nothing, false, 1), second_proven, grid));
 }
 
 TEST(MirrorGhostCheck, MarksBeyondProvenMirrorsOnlyWithTheTestOn) {

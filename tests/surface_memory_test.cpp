@@ -607,8 +607,9 @@ TEST(SurfaceMemory, OnlySparseLinesAreConfirmedAndNeverLiveShorterThanTheLifetim
   EXPECT_EQ(memory.size(), 1u);
 }
 
+constexpr double kMinDepth = 0.16;  // MirrorGhostCheck's: twice its image_radius
+
 TEST(SurfaceMemory, AReturnBeyondAMirrorsLineIsMirroredAcrossIt) {
-  constexpr double kMinDepth = 0.16;  // MirrorGhostCheck's: twice its image_radius
   // Beyond the paper 35: the mirror at y = 1, x from -1 to 1, confirmed.
   SurfaceMemory memory = memoryOfASparseLine(panesRememberedLonger());
   const auto head_on = aFrameFacing({0.0});
@@ -663,7 +664,7 @@ TEST(SurfaceMemory, ACrossingSaysWhichMirrorItWasOf) {
   }
   const auto surfaceCrossedBy = [&](const Eigen::Vector2d& p) {
     std::optional<std::size_t> surface;
-    memory.anyMirrorCrossed(kOrigin, p, at(1.0), 0.16, [&](const MirrorCrossing& c) {
+    memory.anyMirrorCrossed(kOrigin, p, at(1.0), kMinDepth, [&](const MirrorCrossing& c) {
       surface = c.surface;
       return true;
     });

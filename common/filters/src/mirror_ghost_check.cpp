@@ -11,6 +11,11 @@ bool MirrorGhostCheck::isGhost(const MirrorCrossing& crossing, const Penetration
   return imageOnObstacle(crossing.image, grid) && mirrorThere(crossing, grid);
 }
 
+bool MirrorGhostCheck::seenThroughProven(const MirrorCrossing& crossing, const std::vector<bool>& proven,
+                                         const PenetrationGrid& grid) const {
+  return crossing.surface < proven.size() && proven[crossing.surface] && mirrorThere(crossing, grid);
+}
+
 bool MirrorGhostCheck::mirrorThere(const MirrorCrossing& crossing, const PenetrationGrid& grid) const {
   return crossing.within_segment || lineGoesOn(crossing, grid);
 }

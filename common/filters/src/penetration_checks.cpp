@@ -2,7 +2,7 @@
 // frame's returns after the penetration model: the rescue of step 1's jump
 // points (16, 36), the free-space check (17, 19, 39), the thin-object check
 // (25, 30-32, 38) and the surface memory with its mirror images (24, 34,
-// 35); numbers are the sections of docs/beyond-the-paper.md.
+// 35, 43); numbers are the sections of docs/beyond-the-paper.md.
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -179,41 +179,45 @@ bool PenetrationFilter::obstacleBehindInFootprint(const Eigen::Vector2d& origin,
 
 void PenetrationFilter::markBeyondRememberedSurfaces(Stamp stamp, const Eigen::Vector2d& origin,
                                                      std::span<std::uint8_t> labels) const {
-  std::vector<std::size_t> proven;  // the mirrors a ghost was found in
+  const double min_depth = mirror_ghosts_.minDepthBeyondLine();
+  const bool proof_counts = mirror_ghosts_.marksBeyondProvenMirrors();
+  // The remembered panes and mirrors this frame found a ghost in (43).
+  std::vector<bool> proven(memory_.size(), false);
+  bool any_proven = false;
   const std::function<bool(const MirrorCrossing&)> ghost = [&](const MirrorCrossing& crossing) {
     if (!mirror_ghosts_.isGhost(crossing, grid_)) return false;
-    proven.push_back(crossing.surface);
+    proven[crossing.surface] = any_proven = true;
     return true;
   };
-  const auto isMirrorGhost = [&](const Eigen::Vector2d& p) {
-    return mirror_ghosts_.enabled() &&
-           memory_.anyMirrorCrossed(origin, p, stamp, mirror_ghosts_.minDepthBeyondLine(), ghost);
+  // For the proof alone: a beam through a mirror already proven proves no
+  // other, and needs no image test.
+  const std::function<bool(const MirrorCrossing&)> proven_or_ghost = [&](const MirrorCrossing& crossing) {
+    return proven[crossing.surface] || ghost(crossing);
   };
-  for (std::size_t i = 0; i < labels.size(); ++i) {
-    if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid)) continue;
-    if (memory_.liesBeyondASurface(origin, points_[i], stamp) || isMirrorGhost(points_[i]))
-      labels[i] = static_cast<std::uint8_t>(PointCode::kMisdetected);
-  }
-  if (proven.empty() || !mirror_ghosts_.marksBeyondProvenMirrors()) return;
-  std::sort(proven.begin(), proven.end());
-  proven.erase(std::unique(proven.begin(), proven.end()), proven.end());
-  markBeyondProvenMirrors(stamp, origin, proven, labels);
-}
-
-void PenetrationFilter::markBeyondProvenMirrors(Stamp stamp, const Eigen::Vector2d& origin,
-                                                const std::vector<std::size_t>& proven,
-                                                std::span<std::uint8_t> labels) const {
+  markKeptReturnsWhere(labels, [&](const Eigen::Vector2d& p) {
+    if (memory_.liesBeyondASurface(origin, p, stamp)) {
+      // It goes either way, but a ghost there proves its mirror too (43).
+      if (proof_counts) memory_.anyMirrorCrossed(origin, p, stamp, min_depth, proven_or_ghost);
+      return true;
+    }
+    return mirror_ghosts_.enabled() && memory_.anyMirrorCrossed(origin, p, stamp, min_depth, ghost);
+  });
+  if (!any_proven || !proof_counts) return;
   // As deep beyond the line as a ghost must be: nearer, a return may be the
   // mirror's own, scattered by noise, or its frame's.
-  const std::function<bool(const MirrorCrossing&)> through_proven = [&](const MirrorCrossing& crossing) {
-    return std::binary_search(proven.begin(), proven.end(), crossing.surface) &&
-           mirror_ghosts_.mirrorThere(crossing, grid_);
+  const std::function<bool(const MirrorCrossing&)> seen_through_proven = [&](const MirrorCrossing& crossing) {
+    return mirror_ghosts_.seenThroughProven(crossing, proven, grid_);
   };
-  for (std::size_t i = 0; i < labels.size(); ++i) {
-    if (labels[i] != static_cast<std::uint8_t>(PointCode::kValid)) continue;
-    if (memory_.anyMirrorCrossed(origin, points_[i], stamp, mirror_ghosts_.minDepthBeyondLine(), through_proven))
+  markKeptReturnsWhere(labels, [&](const Eigen::Vector2d& p) {
+    return memory_.anyMirrorCrossed(origin, p, stamp, min_depth, seen_through_proven);
+  });
+}
+
+template <typename Beyond>
+void PenetrationFilter::markKeptReturnsWhere(std::span<std::uint8_t> labels, Beyond&& beyond) const {
+  for (std::size_t i = 0; i < labels.size(); ++i)
+    if (labels[i] == static_cast<std::uint8_t>(PointCode::kValid) && beyond(points_[i]))
       labels[i] = static_cast<std::uint8_t>(PointCode::kMisdetected);
-  }
 }
 
 }  // namespace scanfilter

@@ -52,6 +52,10 @@ class MirrorGhostCheck {
   // Whether the mirror is there where the beam crossed its line: on the
   // remembered stretch, or where the cache's returns continue it.
   bool mirrorThere(const MirrorCrossing& crossing, const PenetrationGrid& grid) const;
+  // Whether the beam went through a mirror the frame found a ghost in
+  // (proven[crossing.surface]) where that mirror is there (43).
+  bool seenThroughProven(const MirrorCrossing& crossing, const std::vector<bool>& proven,
+                         const PenetrationGrid& grid) const;
 
  private:
   bool lineGoesOn(const MirrorCrossing& crossing, const PenetrationGrid& grid) const;

@@ -238,13 +238,13 @@ class PenetrationFilter {
                         double angle_step, CellsThatCount cells, Pred&& pred) const;
   // surface_memory: kept returns beyond a remembered surface, and the
   // ghosts of remembered mirrors (mirror_ghosts_), become misdetected
-  // (points_ and `origin` placed as judged); then markBeyondProvenMirrors.
+  // (points_ and `origin` placed as judged); then, beyond a mirror the
+  // frame found a ghost in, its other kept returns where it is there (43).
   void markBeyondRememberedSurfaces(Stamp stamp, const Eigen::Vector2d& origin,
                                     std::span<std::uint8_t> labels) const;
-  // The kept returns beyond the mirrors in `proven` (MirrorCrossing::surface,
-  // sorted), where each is there, become misdetected (43).
-  void markBeyondProvenMirrors(Stamp stamp, const Eigen::Vector2d& origin, const std::vector<std::size_t>& proven,
-                               std::span<std::uint8_t> labels) const;
+  // The kept returns p (points_) with beyond(p) become misdetected.
+  template <typename Beyond>
+  void markKeptReturnsWhere(std::span<std::uint8_t> labels, Beyond&& beyond) const;
   // With rescue_min_baseline: the cached frames taken at least that far from
   // `origin` join the evidence; all of them while none is.
   void admitEvidence(const Eigen::Vector2d& origin);
