@@ -177,6 +177,13 @@ bool PenetrationFilter::obstacleBehindInFootprint(const Eigen::Vector2d& origin,
                           });
 }
 
+template <typename Beyond>
+void PenetrationFilter::markKeptReturnsWhere(std::span<std::uint8_t> labels, Beyond&& beyond) const {
+  for (std::size_t i = 0; i < labels.size(); ++i)
+    if (labels[i] == static_cast<std::uint8_t>(PointCode::kValid) && beyond(points_[i]))
+      labels[i] = static_cast<std::uint8_t>(PointCode::kMisdetected);
+}
+
 void PenetrationFilter::markBeyondRememberedSurfaces(Stamp stamp, const Eigen::Vector2d& origin,
                                                      std::span<std::uint8_t> labels) const {
   const double min_depth = mirror_ghosts_.minDepthBeyondLine();
@@ -186,12 +193,14 @@ void PenetrationFilter::markBeyondRememberedSurfaces(Stamp stamp, const Eigen::V
   bool any_proven = false;
   const std::function<bool(const MirrorCrossing&)> ghost = [&](const MirrorCrossing& crossing) {
     if (!mirror_ghosts_.isGhost(crossing, grid_)) return false;
+    assert(crossing.surface < proven.size());  // the memory does not change while a frame is judged
     proven[crossing.surface] = any_proven = true;
     return true;
   };
   // For the proof alone: a beam through a mirror already proven proves no
   // other, and needs no image test.
   const std::function<bool(const MirrorCrossing&)> proven_or_ghost = [&](const MirrorCrossing& crossing) {
+    assert(crossing.surface < proven.size());
     return proven[crossing.surface] || ghost(crossing);
   };
   markKeptReturnsWhere(labels, [&](const Eigen::Vector2d& p) {
@@ -211,13 +220,6 @@ void PenetrationFilter::markBeyondRememberedSurfaces(Stamp stamp, const Eigen::V
   markKeptReturnsWhere(labels, [&](const Eigen::Vector2d& p) {
     return memory_.anyMirrorCrossed(origin, p, stamp, min_depth, seen_through_proven);
   });
-}
-
-template <typename Beyond>
-void PenetrationFilter::markKeptReturnsWhere(std::span<std::uint8_t> labels, Beyond&& beyond) const {
-  for (std::size_t i = 0; i < labels.size(); ++i)
-    if (labels[i] == static_cast<std::uint8_t>(PointCode::kValid) && beyond(points_[i]))
-      labels[i] = static_cast<std::uint8_t>(PointCode::kMisdetected);
 }
 
 }  // namespace scanfilter

@@ -240,6 +240,8 @@ class PenetrationFilter {
   // ghosts of remembered mirrors (mirror_ghosts_), become misdetected
   // (points_ and `origin` placed as judged); then, beyond a mirror the
   // frame found a ghost in, its other kept returns where it is there (43).
+  // A return behind a remembered surface goes without the image test, but
+  // takes it while its mirror is unproven: its ghost proves the mirror too.
   void markBeyondRememberedSurfaces(Stamp stamp, const Eigen::Vector2d& origin,
                                     std::span<std::uint8_t> labels) const;
   // The kept returns p (points_) with beyond(p) become misdetected.

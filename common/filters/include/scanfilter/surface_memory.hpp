@@ -96,10 +96,10 @@ class SurfaceMemory {
   // the remembered stretch or anywhere past it, p lying beyond that line by
   // min_depth or more, plus the pane's drift margin (driftMargin: where an
   // old one may have moved). Not the surface margin: the caller's test of
-  // the return's image brings its own tolerance. Stops at the first. The
-  // crossing counts as on the stretch only inside its end margins, as for
-  // liesBeyondASurface; it names the segment (MirrorCrossing::surface, an
-  // index below size()).
+  // the return's image brings its own tolerance. Stops at the first, in the
+  // memory's order, for which pred holds. The crossing counts as on the
+  // stretch only inside its end margins, as for liesBeyondASurface; it
+  // names the segment (MirrorCrossing::surface, an index below size()).
   bool anyMirrorCrossed(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now, double min_depth,
                         const std::function<bool(const MirrorCrossing&)>& pred) const;
   // Confirms the sparse segments (rememberSegments) this frame faces as
