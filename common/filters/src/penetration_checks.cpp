@@ -188,20 +188,20 @@ void PenetrationFilter::markBeyondRememberedSurfaces(Stamp stamp, const Eigen::V
                                                      std::span<std::uint8_t> labels) const {
   const double min_depth = mirror_ghosts_.minDepthBeyondLine();
   const bool proof_counts = mirror_ghosts_.marksBeyondProvenMirrors();
-  // The remembered panes and mirrors this frame found a ghost in (43).
-  std::vector<bool> proven(memory_.size(), false);
-  bool any_proven = false;
+  // The remembered panes and mirrors this frame found a ghost in (43): sized
+  // at the first ghost, so empty while none is proven.
+  std::vector<bool> proven;
   const std::function<bool(const MirrorCrossing&)> ghost = [&](const MirrorCrossing& crossing) {
     if (!mirror_ghosts_.isGhost(crossing, grid_)) return false;
+    if (proven.empty()) proven.assign(memory_.size(), false);
     assert(crossing.surface < proven.size());  // the memory does not change while a frame is judged
-    proven[crossing.surface] = any_proven = true;
+    proven[crossing.surface] = true;
     return true;
   };
   // For the proof alone: a beam through a mirror already proven proves no
   // other, and needs no image test.
   const std::function<bool(const MirrorCrossing&)> proven_or_ghost = [&](const MirrorCrossing& crossing) {
-    assert(crossing.surface < proven.size());
-    return proven[crossing.surface] || ghost(crossing);
+    return (crossing.surface < proven.size() && proven[crossing.surface]) || ghost(crossing);
   };
   markKeptReturnsWhere(labels, [&](const Eigen::Vector2d& p) {
     if (memory_.liesBeyondASurface(origin, p, stamp)) {
@@ -211,7 +211,7 @@ void PenetrationFilter::markBeyondRememberedSurfaces(Stamp stamp, const Eigen::V
     }
     return mirror_ghosts_.enabled() && memory_.anyMirrorCrossed(origin, p, stamp, min_depth, ghost);
   });
-  if (!any_proven || !proof_counts) return;
+  if (proven.empty() || !proof_counts) return;
   // As deep beyond the line as a ghost must be: nearer, a return may be the
   // mirror's own, scattered by noise, or its frame's.
   const std::function<bool(const MirrorCrossing&)> seen_through_proven = [&](const MirrorCrossing& crossing) {
