@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Regenerates every measured part of docs/accuracy.md: the two-step filter's
-# own table, the comparison with the baselines (tables, P/R charts, frames
+# own tables (the scenes' own sensors, the sensor presets, sensors near the
+# presets), the comparison with the baselines (tables, P/R charts, frames
 # figure, robustness) and the real-recording report (tables, maps, the
-# multi-view consistency of every filter). Builds
-# first. Takes about 10 minutes on 2 cores.
+# multi-view consistency of every filter). Builds first. Takes about 12
+# minutes on 2 cores.
 #   bash scripts/accuracy-report.sh
 # The generated blocks sit between `<!-- generated:NAME -->` and
 # `<!-- end generated:NAME -->` in docs/accuracy.md; the prose around them is
@@ -25,6 +26,7 @@ trap 'rm -rf "$WORK"' EXIT
 
 "$BIN/bench/accuracy_table" > "$WORK/table.md"
 "$BIN/bench/accuracy_table" --sensor tof,triangulation > "$WORK/table-sensors.md"
+"$BIN/bench/sensor_robustness" > "$WORK/sensor-robustness.md"
 "$BIN/tools/scanfilter" bench-accuracy --config config/filter.yaml -o "$WORK/compare"
 "$BIN/tools/scanfilter" report-real --config config/filter.yaml --literal-config config/filter-paper-literal.yaml \
   "$REAL"/carmen/*.log.gz "$REAL"/mines_urg04lx/*.dat -o "$WORK/real" --image-prefix images/
@@ -43,6 +45,7 @@ splice() {
 }
 splice table "$WORK/table.md"
 splice table-sensors "$WORK/table-sensors.md"
+splice sensor-robustness "$WORK/sensor-robustness.md"
 splice comparison "$WORK/compare/accuracy-comparison.md"
 splice real "$WORK/real/real-recordings.md"
 splice real-consistency "$WORK/real/real-consistency.md"

@@ -127,6 +127,27 @@ TEST(SimulateScene, AnySensorPresetOnAnyScene) {
   EXPECT_EQ(simulateScene("office", 1, 2).scans.front().size(), 360u) << "without a preset, the scene's own sensor";
 }
 
+// bench/sensor_robustness changes a preset's range this way: the scans and
+// the header the filter reads both follow.
+TEST(SimulateScene, AVariantsAdjustmentComesAfterTheSensorPreset) {
+  constexpr double kShorterRange = 3.0;  // m: the office's walls lie farther from much of its tour
+  SceneVariant near_only;
+  near_only.sensor = "triangulation";
+  near_only.adjust = [](sim::Scene& s) { s.sensor.range_max = kShorterRange; };
+  const auto log = simulateScene("office", 1, 5, near_only);
+  EXPECT_DOUBLE_EQ(log.sensor.range_max, kShorterRange);
+  std::size_t no_return = 0;
+  for (const auto& scan : log.scans)
+    for (std::size_t i = 0; i < scan.size(); ++i) {
+      if (scan.hasReturn(i)) EXPECT_LE(scan.ranges[i], kShorterRange) << log.name << " beam " << i;
+      else ++no_return;
+    }
+  EXPECT_GT(no_return, 0u) << "some walls lie beyond the shorter range";
+  SceneVariant preset_alone;
+  preset_alone.sensor = "triangulation";
+  EXPECT_DOUBLE_EQ(simulateScene("office", 1, 1, preset_alone).sensor.range_max, 8.0) << "without it, the preset's";
+}
+
 TEST(ScoreFilter, OurConfigScoresAsOurFamilyAtItsDefaults) {
   const std::vector<LabelledLog> logs = {simulateScene("office", 1, 30), simulateScene("home", 1, 30)};
   LogLabels labels;

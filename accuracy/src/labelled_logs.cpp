@@ -10,6 +10,7 @@ LabelledLog simulateScene(const std::string& scene_name, std::uint64_t seed, int
   scene.lidar.noise_sigma_base *= variant.noise_factor;
   scene.lidar.noise_sigma_quadratic *= variant.noise_factor;
   if (variant.odometry) scene.odometry = *variant.odometry;
+  if (variant.adjust) variant.adjust(scene);
   const std::string sensor = variant.sensor.empty() ? "" : " " + scene.sensor_preset;
   return sim::simulateLog(scene, seed, scene_name + sensor + " seed " + std::to_string(seed), max_frames);
 }

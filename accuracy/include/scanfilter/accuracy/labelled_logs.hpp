@@ -2,12 +2,14 @@
 // Labelled logs of the built-in scenes, simulated in memory: what the
 // accuracy programs (bench/) and `scanfilter bench-accuracy` score filters on.
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "scanfilter/sim/labelled_log.hpp"
 #include "scanfilter/sim/odometry_drift.hpp"
+#include "scanfilter/sim/scene.hpp"
 
 namespace scanfilter::accuracy {
 
@@ -24,6 +26,9 @@ struct SceneVariant {
   // sim::kDefaultOdometryDrift unless the scene file says otherwise.
   std::optional<sim::OdometryDrift> odometry;
   std::string sensor;  // sensor preset (config/sensors) or file; empty: the scene's own
+  // Any other change, made last: a sensor's range, receiver or surfaces
+  // (bench/sensor_robustness). Empty: none.
+  std::function<void(sim::Scene&)> adjust;
 };
 
 // One built-in scene at one seed, named "SCENE seed N" ("SCENE SENSOR seed N"
