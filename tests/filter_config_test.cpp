@@ -62,6 +62,8 @@ TEST(FilterConfig, ShippedConfigEqualsTheBuiltInDefaults) {
   EXPECT_EQ(s.penetration.free_space_min_frames, d.penetration.free_space_min_frames);
   EXPECT_EQ(s.penetration.free_space_veto_count, d.penetration.free_space_veto_count);
   EXPECT_EQ(s.penetration.free_space_lone_returns_vote, d.penetration.free_space_lone_returns_vote);
+  EXPECT_EQ(s.penetration.free_space_lone_votes_beyond_panes, d.penetration.free_space_lone_votes_beyond_panes);
+  EXPECT_EQ(s.penetration.free_space_lone_vote_pane_reach, d.penetration.free_space_lone_vote_pane_reach);
   EXPECT_EQ(s.penetration.thin_object_check, d.penetration.thin_object_check);
   EXPECT_EQ(s.penetration.thin_object_max_beams, d.penetration.thin_object_max_beams);
   EXPECT_EQ(s.penetration.thin_object_radius, d.penetration.thin_object_radius);
@@ -193,6 +195,15 @@ TEST(FilterConfig, ReadsWhetherTheFreeSpaceChecksLoneReturnsVote) {
   EXPECT_TRUE(PenetrationFilterParams{}.free_space_lone_returns_vote);
 }
 
+TEST(FilterConfig, ReadsWhetherLoneReturnsBeyondAPaneVote) {
+  const FilterConfig c = parseFilterConfig(
+      "penetration_filter:\n  free_space_lone_votes_beyond_panes: true\n  free_space_lone_vote_pane_reach: 0.5\n",
+      "f.yaml");
+  EXPECT_TRUE(c.params.penetration.free_space_lone_votes_beyond_panes);
+  EXPECT_EQ(c.params.penetration.free_space_lone_vote_pane_reach, 0.5);
+  EXPECT_FALSE(PenetrationFilterParams{}.free_space_lone_votes_beyond_panes);
+}
+
 TEST(FilterConfig, ReadsTheRescueParallax) {
   const FilterConfig c = parseFilterConfig("penetration_filter:\n  rescue_min_parallax_deg: 12.5\n", "f.yaml");
   EXPECT_EQ(c.params.penetration.rescue_min_parallax_deg, 12.5);
@@ -310,6 +321,8 @@ TEST(FilterConfigErrors, NameFileLineAndKey) {
   EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    mirror_ghosts:\n      image_radius: 0\n"),
             "f.yaml:4: penetration_filter.surface_memory.mirror_ghosts.image_radius: expected 0.001 <= value <= 1 (m), "
             "got 0");
+  EXPECT_EQ(errorOf("penetration_filter:\n  free_space_lone_vote_pane_reach: -0.1\n"),
+            "f.yaml:2: penetration_filter.free_space_lone_vote_pane_reach: expected 0 <= value <= 10 (m), got -0.1");
   EXPECT_EQ(errorOf("penetration_filter:\n  rescue_min_parallax_deg: 90\n"),
             "f.yaml:2: penetration_filter.rescue_min_parallax_deg: expected 0 <= value <= 89 (degrees; 0: off), "
             "got 90");

@@ -678,6 +678,32 @@ TEST(SurfaceMemory, ACrossingSaysWhichMirrorItWasOf) {
   EXPECT_NE(*ahead, *behind);
 }
 
+// Beyond the paper 44 asks how far past the remembered stretch a beam
+// crossed a pane's line: a pane's ends are seen less than its middle.
+TEST(SurfaceMemory, ACrossingSaysHowFarPastTheStretchItLies) {
+  SurfaceMemory memory(panesRememberedLonger());
+  const std::vector<StraightSegment> line = {{{-1.0, 1.0}, {1.0, 1.0}, false, false}};
+  memory.rememberSegments(line, kOrigin, at(0.0), 0.0);
+  std::vector<Eigen::Vector2d> frame = {{0.0, 1.0}};  // faced head-on: a return on it, beams through it beyond
+  for (double x : {-2.4, -1.8, 1.8, 2.4}) frame.emplace_back(x, 3.0);
+  memory.confirmPanesAndMirrors(frame, usableReturns(frame), kOrigin);
+  const auto pastEndOfCrossing = [&](const Eigen::Vector2d& p) {
+    std::optional<double> past_end;
+    memory.anyMirrorCrossed(kOrigin, p, at(1.0), kMinDepth, [&](const MirrorCrossing& c) {
+      past_end = c.past_end;
+      return true;
+    });
+    return past_end;
+  };
+  const std::optional<double> on_it = pastEndOfCrossing({0.5, 2.0});      // crosses at x = 0.25
+  const std::optional<double> past_it = pastEndOfCrossing({3.0, 2.0});    // at x = 1.5
+  const std::optional<double> other_end = pastEndOfCrossing({-4.0, 2.0});  // at x = -2
+  ASSERT_TRUE(on_it && past_it && other_end);
+  EXPECT_NEAR(*on_it, -0.75, 1e-9) << "0.75 m inside the nearer end";
+  EXPECT_NEAR(*past_it, 0.5, 1e-9);
+  EXPECT_NEAR(*other_end, 1.0, 1e-9);
+}
+
 TEST(SurfaceMemory, AConfirmedPaneStaysOneWhenSeenAgainAsASparseLine) {
   SurfaceMemory memory = memoryOfASparseLine(panesRememberedLonger());
   const auto head_on = aFrameFacing({0.0});

@@ -252,6 +252,8 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.read("free_space_min_frames", p.free_space_min_frames);
   s.read("free_space_veto_count", p.free_space_veto_count);
   s.read("free_space_lone_returns_vote", p.free_space_lone_returns_vote);
+  s.read("free_space_lone_votes_beyond_panes", p.free_space_lone_votes_beyond_panes);
+  s.read("free_space_lone_vote_pane_reach", p.free_space_lone_vote_pane_reach);
   s.read("thin_object_check", p.thin_object_check);
   s.read("thin_object_max_beams", p.thin_object_max_beams);
   s.read("thin_object_radius", p.thin_object_radius);
@@ -295,6 +297,8 @@ void readPenetration(YamlSection& s, FilterConfig& config) {
   s.requireRange("free_space_margin", p.free_space_margin, 0.0, 10.0, "0 <= value <= 10 (m)");
   s.requireRange("free_space_margin_per_m", p.free_space_margin_per_m, 0.0, 1.0, "0 <= value <= 1 (m per m)");
   s.requireRange("free_space_dip", p.free_space_dip, 0.0, 10.0, "0 <= value <= 10 (m)");
+  s.requireRange("free_space_lone_vote_pane_reach", p.free_space_lone_vote_pane_reach, 0.0, 10.0,
+                 "0 <= value <= 10 (m)");
   // More than the cache holds would switch the check off without a word.
   s.requireRange("free_space_min_frames", p.free_space_min_frames, 1, static_cast<double>(p.max_cache_frames),
                  "an integer from 1 to max_cache_frames");

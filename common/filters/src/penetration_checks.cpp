@@ -96,10 +96,22 @@ void PenetrationFilter::markSeenThrough(const Scan& scan, const Eigen::Vector2d&
     // A thin object's mixed return has that object in its footprint in front
     // of it (the thin-object check's own test); a pane's direct return has
     // nothing there.
+    // A pane's direct return, not what was seen through one (44).
     if (lone_returns_vote)
       lone_seen_through_.set(i, stands[i] == StandsInFront::kOfBothSides &&
-                                    !objectInFootprint(origin, points_[i], scan.angle_increment));
+                                    !objectInFootprint(origin, points_[i], scan.angle_increment) &&
+                                    (params_.free_space_lone_votes_beyond_panes ||
+                                     !seenBeyondAPane(origin, points_[i], scan.stamp)));
   }
+}
+
+bool PenetrationFilter::seenBeyondAPane(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp stamp) const {
+  if (!memory_.enabled()) return false;
+  const double reach = params_.free_space_lone_vote_pane_reach;
+  return memory_.anyMirrorCrossed(origin, p, stamp, mirror_ghosts_.minDepthBeyondLine(),
+                                  [&](const MirrorCrossing& crossing) {
+                                    return crossing.past_end <= reach || mirror_ghosts_.mirrorThere(crossing, grid_);
+                                  });
 }
 
 void PenetrationFilter::markMixedReturnsOfThinObjects(const Scan& scan, const Eigen::Vector2d& origin,

@@ -141,7 +141,9 @@ bool SurfaceMemory::anyMirrorCrossed(const Eigen::Vector2d& origin, const Eigen:
     const double beyond = s.normal.dot(p - s.a);
     if (!(std::abs(beyond) >= min_depth + driftMargin(s, range))) continue;  // on the line (NaN too)
     const std::optional<double> along = s.crossingAlong(origin, p);  // nullopt: p on the sensor's side
-    if (along && pred({s.a + s.unit * *along, s.unit, p - 2.0 * beyond * s.normal, s.insideEnds(*along), k}))
+    if (!along) continue;
+    const double past_end = std::max(-*along, *along - s.length);
+    if (pred({s.a + s.unit * *along, s.unit, p - 2.0 * beyond * s.normal, s.insideEnds(*along), k, past_end}))
       return true;
   }
   return false;

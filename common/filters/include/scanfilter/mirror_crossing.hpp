@@ -15,6 +15,9 @@ struct MirrorCrossing {
   // Which remembered pane or mirror: the same number for every crossing of
   // it while the memory is unchanged (a frame's judging), not beyond.
   std::size_t surface = 0;
+  // How far past the nearer end of the remembered stretch the crossing lies
+  // (m; 0 or less on it, end margins included).
+  double past_end = 0.0;
 };
 
 }  // namespace scanfilter

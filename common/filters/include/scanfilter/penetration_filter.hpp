@@ -212,6 +212,11 @@ class PenetrationFilter {
   // free_space_check: kept returns that far cached frames looked through
   // become jump points (points_ and `origin` placed as judged).
   void markSeenThrough(const Scan& scan, const Eigen::Vector2d& origin, std::span<std::uint8_t> labels);
+  // Whether the beam from `origin` to p crossed a confirmed pane or mirror
+  // of the surface memory where it is there (its stretch, 35's line test,
+  // or free_space_lone_vote_pane_reach past the stretch), p beyond its line
+  // by 35's minimum depth: p was seen through it or reflected by it (44).
+  bool seenBeyondAPane(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp stamp) const;
   // thin_object_check: kept returns standing in front of both sides with a
   // cached object in their footprint, in front of them, become jump points
   // (points_ and `origin` placed as judged); beside a beam without a return
