@@ -21,8 +21,9 @@ constexpr int kObstacleThreshold = 2;  // a cell of 3 returns is an obstacle
 
 // A mirror along the x axis; the beam crossed it at (x, 0), its return
 // mirrored to `image`.
-MirrorCrossing crossingAt(double x, const Eigen::Vector2d& image, bool within_segment, std::size_t surface = 0) {
-  return {{x, 0.0}, {1.0, 0.0}, image, within_segment, surface};
+MirrorCrossing crossingAt(double x, const Eigen::Vector2d& image, bool within_segment, std::size_t surface = 0,
+                          double past_end = 0.0) {
+  return {{x, 0.0}, {1.0, 0.0}, image, within_segment, surface, past_end};
 }
 
 void addReturns(PenetrationGrid& grid, const Eigen::Vector2d& p, int count) {
@@ -39,6 +40,26 @@ TEST(MirrorGhostCheck, AGhostsImageLiesOnAnObstacleTheCacheHolds) {
   PenetrationGrid too_few(kCell, kObstacleThreshold);
   addReturns(too_few, {0.5, -1.5}, 2);
   EXPECT_FALSE(check.isGhost(crossingAt(0.2, {0.5, -1.5}, true), too_few)) << "no obstacle: obs_th returns";
+}
+
+// Beyond the paper 44 takes a pane as there a little past its remembered
+// stretch too, where neither the stretch nor the line test puts it.
+TEST(MirrorGhostCheck, AMirrorIsWithinReachOfItsStretch) {
+  const MirrorGhostCheck check({});
+  const PenetrationGrid nothing_on_the_line(kCell, kObstacleThreshold);
+  const Eigen::Vector2d image{2.0, -1.5};
+  constexpr double kReach = 0.3;
+  const MirrorCrossing just_past = crossingAt(2.0, image, false, 0, 0.2);
+  EXPECT_FALSE(check.mirrorThere(just_past, nothing_on_the_line));
+  EXPECT_TRUE(check.mirrorWithin(just_past, nothing_on_the_line, kReach));
+  EXPECT_FALSE(check.mirrorWithin(just_past, nothing_on_the_line, 0.1)) << "past a shorter reach";
+  EXPECT_FALSE(check.mirrorWithin(crossingAt(2.0, image, false, 0, 0.5), nothing_on_the_line, kReach));
+  EXPECT_TRUE(check.mirrorWithin(crossingAt(2.0, image, true, 0, -0.4), nothing_on_the_line, 0.0)) << "on it";
+  PenetrationGrid mirror_goes_on(kCell, kObstacleThreshold);  // its diffuse returns either side of the crossing
+  addReturns(mirror_goes_on, {1.93, 0.01}, 1);
+  addReturns(mirror_goes_on, {2.08, -0.02}, 1);
+  EXPECT_TRUE(check.mirrorWithin(crossingAt(2.0, image, false, 0, 1.5), mirror_goes_on, kReach))
+      << "far past, where the line test finds it";
 }
 
 TEST(MirrorGhostCheck, PastTheRememberedStretchTheCachesReturnsMustContinueTheLine) {

@@ -816,10 +816,11 @@ TEST(PenetrationFilter, APaneAFrameFindsAGhostInTakesTheReturnsSeenThroughIt) {
 
 // Beyond the paper 44 on the triangulation preset's office with its pane
 // seen a third as often off its lobe: from the room beyond the doorway the
-// robot sees the corridor's far wall mirrored in the partition, where the
-// remembered pane falls short of its end. Those ghosts lie in the corridor's
-// free space, alone; as votes they lined up into a sparse surface there, and
-// the memory took the real wall behind it.
+// robot sees that room's back wall mirrored by the partition into the
+// corridor, where the remembered pane falls short of its end. Those ghosts
+// lie in the corridor's free space, alone; as votes they lined up into a
+// sparse surface there, and the memory took the corridor's real wall
+// behind it.
 TEST(PenetrationFilter, AReturnSeenBeyondAPaneIsNoVoteForAPane) {
   sim::Scene scene = sim::sceneWithSensor("office", "triangulation");
   constexpr double kAThirdAsOften = 1.0 / 3.0;

@@ -20,6 +20,10 @@ bool MirrorGhostCheck::mirrorThere(const MirrorCrossing& crossing, const Penetra
   return crossing.within_segment || lineGoesOn(crossing, grid);
 }
 
+bool MirrorGhostCheck::mirrorWithin(const MirrorCrossing& crossing, const PenetrationGrid& grid, double reach) const {
+  return crossing.past_end <= reach || mirrorThere(crossing, grid);
+}
+
 bool MirrorGhostCheck::lineGoesOn(const MirrorCrossing& crossing, const PenetrationGrid& grid) const {
   const ReturnsNearLine near = returnsNearLine(crossing, grid);
   // A return on the line with one just off it a cell along or less is a

@@ -93,24 +93,28 @@ void PenetrationFilter::markSeenThrough(const Scan& scan, const Eigen::Vector2d&
     }
     if (!free_space_.seenThrough(through, hits)) continue;
     labels[i] = static_cast<std::uint8_t>(PointCode::kJump);
-    // A thin object's mixed return has that object in its footprint in front
-    // of it (the thin-object check's own test); a pane's direct return has
-    // nothing there.
-    // A pane's direct return, not what was seen through one (44).
-    if (lone_returns_vote)
-      lone_seen_through_.set(i, stands[i] == StandsInFront::kOfBothSides &&
-                                    !objectInFootprint(origin, points_[i], scan.angle_increment) &&
-                                    (params_.free_space_lone_votes_beyond_panes ||
-                                     !seenBeyondAPane(origin, points_[i], scan.stamp)));
+    if (lone_returns_vote) lone_seen_through_.set(i, mayBeAPanesDirectReturn(origin, points_[i], stands[i], scan));
   }
+}
+
+bool PenetrationFilter::mayBeAPanesDirectReturn(const Eigen::Vector2d& origin, const Eigen::Vector2d& p,
+                                                StandsInFront stands, const Scan& scan) const {
+  // Alone in front of both sides (39). A thin object's mixed return has that
+  // object in its footprint in front of it (the thin-object check's own
+  // test); a pane's direct return has nothing there. Nor was it seen through
+  // a pane, or reflected by one (44).
+  if (stands != StandsInFront::kOfBothSides || objectInFootprint(origin, p, scan.angle_increment)) return false;
+  return params_.free_space_lone_votes_beyond_panes || !seenBeyondAPane(origin, p, scan.stamp);
 }
 
 bool PenetrationFilter::seenBeyondAPane(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp stamp) const {
   if (!memory_.enabled()) return false;
+  // 35's depth and line test, whether or not 35 itself marks ghosts
+  // (mirror_ghosts.enabled): they say where a pane is, not what a ghost is.
   const double reach = params_.free_space_lone_vote_pane_reach;
   return memory_.anyMirrorCrossed(origin, p, stamp, mirror_ghosts_.minDepthBeyondLine(),
                                   [&](const MirrorCrossing& crossing) {
-                                    return crossing.past_end <= reach || mirror_ghosts_.mirrorThere(crossing, grid_);
+                                    return mirror_ghosts_.mirrorWithin(crossing, grid_, reach);
                                   });
 }
 

@@ -52,6 +52,10 @@ class MirrorGhostCheck {
   // Whether the mirror is there where the beam crossed its line: on the
   // remembered stretch, or where the cache's returns continue it.
   bool mirrorThere(const MirrorCrossing& crossing, const PenetrationGrid& grid) const;
+  // Whether it is there, or the crossing lies at most `reach` past the
+  // remembered stretch: a pane's ends are met more obliquely than its
+  // middle, so the stretch the memory holds falls short of them (44).
+  bool mirrorWithin(const MirrorCrossing& crossing, const PenetrationGrid& grid, double reach) const;
   // Whether the beam went through a mirror the frame found a ghost in
   // (proven[crossing.surface]) where that mirror is there (43).
   bool seenThroughProven(const MirrorCrossing& crossing, const std::vector<bool>& proven,

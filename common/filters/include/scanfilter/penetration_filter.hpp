@@ -212,6 +212,10 @@ class PenetrationFilter {
   // free_space_check: kept returns that far cached frames looked through
   // become jump points (points_ and `origin` placed as judged).
   void markSeenThrough(const Scan& scan, const Eigen::Vector2d& origin, std::span<std::uint8_t> labels);
+  // Whether a return the check marked may be a pane's direct return, and
+  // so votes in the cache (free_space_lone_returns_vote, 39 and 44).
+  bool mayBeAPanesDirectReturn(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, StandsInFront stands,
+                               const Scan& scan) const;
   // Whether the beam from `origin` to p crossed a confirmed pane or mirror
   // of the surface memory where it is there (its stretch, 35's line test,
   // or free_space_lone_vote_pane_reach past the stretch), p beyond its line

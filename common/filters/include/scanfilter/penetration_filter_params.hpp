@@ -177,18 +177,20 @@ struct PenetrationFilterParams {
   // edge_vote_margin_deg > 0 no lone return votes: it lies beside a depth
   // edge. false: no marked return votes (until 39).
   bool free_space_lone_returns_vote = true;
-  // Beyond the paper 44: ... but not a lone return whose beam crossed the
-  // line of a confirmed pane or mirror first (the surface memory's, 34),
-  // beyond it as far as 35 asks of a ghost: it was seen through that pane
-  // or reflected by it. A ghost lies on the image of the wall it came from,
-  // so its votes line up into a sparse surface (29) that is no surface, and
-  // the memory then takes the real wall behind it for seconds. The pane is
-  // there on its remembered stretch, where 35's line test finds it, and up
-  // to `free_space_lone_vote_pane_reach` past the stretch's ends: a pane's
-  // ends are met more obliquely than its middle, so the stretch the memory
-  // holds falls short of them. true: such returns vote too (39 alone).
+  // Beyond the paper 44: with free_space_lone_returns_vote, a lone return
+  // whose beam crossed the line of a confirmed pane or mirror first (the
+  // surface memory's, 34), and lies beyond it as far as 35 asks of a ghost,
+  // does not vote: it was seen through that pane or reflected by it. A
+  // ghost lies on the image of the wall it came from, so its votes line up
+  // into a sparse surface (29) that is no surface, and the memory then
+  // takes the real wall behind it for seconds. The pane is there on its
+  // remembered stretch, where 35's line test finds it, and up to
+  // free_space_lone_vote_pane_reach past the stretch's ends
+  // (MirrorGhostCheck::mirrorWithin). true: such returns vote too, as
+  // with 39 alone.
   bool free_space_lone_votes_beyond_panes = false;
-  double free_space_lone_vote_pane_reach = 0.30;  // m
+  // m past the remembered stretch a crossing still counts as on the pane, 0-10.
+  double free_space_lone_vote_pane_reach = 0.30;
   // Beyond the paper (thin_object_check.hpp; docs/beyond-the-paper.md, 25):
   // a kept return in a stretch of at most thin_object_max_beams returns
   // standing in front of both sides (by thin_object_depth_step; the

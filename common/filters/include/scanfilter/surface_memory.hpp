@@ -98,7 +98,9 @@ class SurfaceMemory {
   // old one may have moved). Not the surface margin: the caller's test of
   // the return's image brings its own tolerance. Stops at the first, in the
   // memory's order, for which pred holds. The crossing counts as on the
-  // stretch only inside its end margins, as for liesBeyondASurface; it
+  // stretch only inside its end margins, as for liesBeyondASurface
+  // (MirrorCrossing::within_segment; past_end says how far past the
+  // stretch's nearer end it lies, the end margins counted as on it); it
   // names the segment (MirrorCrossing::surface, an index below size()).
   bool anyMirrorCrossed(const Eigen::Vector2d& origin, const Eigen::Vector2d& p, Stamp now, double min_depth,
                         const std::function<bool(const MirrorCrossing&)>& pred) const;
