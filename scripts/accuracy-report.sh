@@ -3,7 +3,7 @@
 # own tables (the scenes' own sensors, the sensor presets, sensors near the
 # presets), the comparison with the baselines (tables, P/R charts, frames
 # figure, robustness) and the real-recording report (tables, maps, the
-# multi-view consistency of every filter). Builds first. Takes about 12
+# multi-view consistency of every filter). Builds first. Takes about 15
 # minutes on 2 cores.
 #   bash scripts/accuracy-report.sh
 # The generated blocks sit between `<!-- generated:NAME -->` and
