@@ -649,59 +649,56 @@ TEST(SurfaceMemory, AReturnBeyondAMirrorsLineIsMirroredAcrossIt) {
                                             [](const MirrorCrossing&) { return true; }));
 }
 
+// Panes 2 m long across the y axis at y = each of `ys`, remembered at t = 0
+// and confirmed by a frame at the origin that faces each head-on: a return
+// on it, beams through it beyond its lobe.
+SurfaceMemory panesConfirmedAt(const std::vector<double>& ys) {
+  SurfaceMemory memory(panesRememberedLonger());
+  std::vector<StraightSegment> lines;
+  for (const double y : ys) lines.push_back({{-1.0, y}, {1.0, y}, false, false});
+  memory.rememberSegments(lines, kOrigin, at(0.0), 0.0);
+  for (const double y : ys) {
+    std::vector<Eigen::Vector2d> frame = {{0.0, y}};
+    for (double x : {-2.4, -1.8, 1.8, 2.4}) frame.emplace_back(x, 3.0 * y);
+    memory.confirmPanesAndMirrors(frame, usableReturns(frame), kOrigin);
+  }
+  return memory;
+}
+
+// The first crossing anyMirrorCrossed reports for the return at p, seen
+// from the origin at t = 1.
+std::optional<MirrorCrossing> firstCrossing(const SurfaceMemory& memory, const Eigen::Vector2d& p) {
+  std::optional<MirrorCrossing> first;
+  memory.anyMirrorCrossed(kOrigin, p, at(1.0), kMinDepth, [&](const MirrorCrossing& c) {
+    first = c;
+    return true;
+  });
+  return first;
+}
+
 // Beyond the paper 43 asks which mirror a crossing was of: the ghost found
 // in one proves that one alone.
 TEST(SurfaceMemory, ACrossingSaysWhichMirrorItWasOf) {
-  SurfaceMemory memory(panesRememberedLonger());
-  const std::vector<StraightSegment> two_lines = {{{-1.0, 1.0}, {1.0, 1.0}, false, false},
-                                                  {{-1.0, -1.0}, {1.0, -1.0}, false, false}};
-  memory.rememberSegments(two_lines, kOrigin, at(0.0), 0.0);
-  // Each faced head-on: returns on it, beams through it beyond its lobe.
-  for (const double side : {1.0, -1.0}) {
-    std::vector<Eigen::Vector2d> frame = {{0.0, side}};
-    for (double x : {-2.4, -1.8, 1.8, 2.4}) frame.emplace_back(x, 3.0 * side);
-    memory.confirmPanesAndMirrors(frame, usableReturns(frame), kOrigin);
-  }
-  const auto surfaceCrossedBy = [&](const Eigen::Vector2d& p) {
-    std::optional<std::size_t> surface;
-    memory.anyMirrorCrossed(kOrigin, p, at(1.0), kMinDepth, [&](const MirrorCrossing& c) {
-      surface = c.surface;
-      return true;
-    });
-    return surface;
-  };
-  const std::optional<std::size_t> ahead = surfaceCrossedBy({0.5, 2.0});
-  const std::optional<std::size_t> ahead_past_its_end = surfaceCrossedBy({3.0, 2.0});
-  const std::optional<std::size_t> behind = surfaceCrossedBy({0.5, -2.0});
+  const SurfaceMemory memory = panesConfirmedAt({1.0, -1.0});
+  const std::optional<MirrorCrossing> ahead = firstCrossing(memory, {0.5, 2.0});
+  const std::optional<MirrorCrossing> ahead_past_its_end = firstCrossing(memory, {3.0, 2.0});
+  const std::optional<MirrorCrossing> behind = firstCrossing(memory, {0.5, -2.0});
   ASSERT_TRUE(ahead && ahead_past_its_end && behind);
-  EXPECT_EQ(*ahead, *ahead_past_its_end);
-  EXPECT_NE(*ahead, *behind);
+  EXPECT_EQ(ahead->surface, ahead_past_its_end->surface);
+  EXPECT_NE(ahead->surface, behind->surface);
 }
 
 // Beyond the paper 44 asks how far past the remembered stretch a beam
 // crossed a pane's line: a pane's ends are seen less than its middle.
 TEST(SurfaceMemory, ACrossingSaysHowFarPastTheStretchItLies) {
-  SurfaceMemory memory(panesRememberedLonger());
-  const std::vector<StraightSegment> line = {{{-1.0, 1.0}, {1.0, 1.0}, false, false}};
-  memory.rememberSegments(line, kOrigin, at(0.0), 0.0);
-  std::vector<Eigen::Vector2d> frame = {{0.0, 1.0}};  // faced head-on: a return on it, beams through it beyond
-  for (double x : {-2.4, -1.8, 1.8, 2.4}) frame.emplace_back(x, 3.0);
-  memory.confirmPanesAndMirrors(frame, usableReturns(frame), kOrigin);
-  const auto pastEndOfCrossing = [&](const Eigen::Vector2d& p) {
-    std::optional<double> past_end;
-    memory.anyMirrorCrossed(kOrigin, p, at(1.0), kMinDepth, [&](const MirrorCrossing& c) {
-      past_end = c.past_end;
-      return true;
-    });
-    return past_end;
-  };
-  const std::optional<double> on_it = pastEndOfCrossing({0.5, 2.0});      // crosses at x = 0.25
-  const std::optional<double> past_it = pastEndOfCrossing({3.0, 2.0});    // at x = 1.5
-  const std::optional<double> other_end = pastEndOfCrossing({-4.0, 2.0});  // at x = -2
+  const SurfaceMemory memory = panesConfirmedAt({1.0});
+  const std::optional<MirrorCrossing> on_it = firstCrossing(memory, {0.5, 2.0});      // crosses at x = 0.25
+  const std::optional<MirrorCrossing> past_it = firstCrossing(memory, {3.0, 2.0});    // at x = 1.5
+  const std::optional<MirrorCrossing> other_end = firstCrossing(memory, {-4.0, 2.0});  // at x = -2
   ASSERT_TRUE(on_it && past_it && other_end);
-  EXPECT_NEAR(*on_it, -0.75, 1e-9) << "0.75 m inside the nearer end";
-  EXPECT_NEAR(*past_it, 0.5, 1e-9);
-  EXPECT_NEAR(*other_end, 1.0, 1e-9);
+  EXPECT_NEAR(on_it->past_end, -0.75, 1e-9) << "0.75 m inside the nearer end";
+  EXPECT_NEAR(past_it->past_end, 0.5, 1e-9);
+  EXPECT_NEAR(other_end->past_end, 1.0, 1e-9);
 }
 
 TEST(SurfaceMemory, AConfirmedPaneStaysOneWhenSeenAgainAsASparseLine) {
