@@ -198,7 +198,9 @@ wait_firing ScanfilterSamplesRejected jump_filter
 echo "SamplesRejected fired ${WAITED_MS} ms after the bad samples were acknowledged"
 
 # 3. The map's folder disappears: saves fail, the publisher keeps running.
-rm -rf "$WORK/maps"
+# Renamed away in one step: `rm -rf` races the publisher, which may write a
+# new file into the folder between rm's unlinks and its rmdir.
+mv "$WORK/maps" "$WORK/maps.removed"
 wait_firing ScanfilterMapNotSaved map_publisher
 echo "MapNotSaved fired ${WAITED_MS} ms after the map's folder was removed (test limit 5 s)"
 kill -0 "$MAP" 2> /dev/null || fail "map_publisher ended when a save failed"
