@@ -41,6 +41,7 @@ int main(int argc, char** argv) {
                                                                          losslessWriterQos(StreamQos{}));
   for (int i = 0; i < 500 && writer.matchedReaders() < 1; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(20));
   if (writer.matchedReaders() < 1) return 1;
+  std::this_thread::sleep_for(kDiscoverySettle);  // the reader must match us too, or a volatile sample is lost
 
   LabeledScanMsg msg = goodScan(0);
   msg.intensities().assign(kBeams - 1, 1.0f);  // length_mismatch

@@ -245,7 +245,9 @@ start robot "$WORK/ingest.log" timeout -k 5 90 "$BUILD/services/scan_ingest" --c
 INGEST=$STARTED
 deadline=$((SECONDS + 40))
 until grep -q "\[info\] started:" "$WORK/ingest.log"; do
-  kill -0 "$INGEST" 2>/dev/null || fail "scan_ingest on the robot ended before it started publishing"
+  # Ended meanwhile: it may have started and finished since the grep above.
+  kill -0 "$INGEST" 2>/dev/null || grep -q "\[info\] started:" "$WORK/ingest.log" ||
+    fail "scan_ingest on the robot ended before it started publishing"
   [ "$SECONDS" -lt "$deadline" ] || fail "scan_ingest on the robot did not find its readers within 40 s"
   sleep 0.01
 done

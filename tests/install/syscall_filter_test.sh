@@ -26,6 +26,9 @@ declare -A PID_OF TRACER_OF  # per service: its PID under strace, and strace's
 cleanup() {
   # The services first: killing strace detaches it, and its tracee lives on.
   for pid in "${PID_OF[@]}" "${PIDS[@]}" $LISTENER; do kill -KILL "$pid" 2>/dev/null || true; done
+  # Our own children reaped before WORK goes (the services are strace's: a
+  # tracer ends after its tracee), so that none writes into it meanwhile.
+  for pid in "${TRACER_OF[@]}" "${PIDS[@]}" $LISTENER; do wait "$pid" 2>/dev/null || true; done
   rm -rf "$WORK"
 }
 trap cleanup EXIT

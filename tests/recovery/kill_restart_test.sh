@@ -20,6 +20,8 @@ WORK=$(mktemp -d)
 declare -A PID PORT=([scan_ingest]=19471 [jump_filter]=19472 [penetration_filter]=19473 [map_publisher]=19474)
 cleanup() {
   for pid in "${PID[@]}"; do kill -KILL "$pid" 2>/dev/null || true; done
+  # Reaped before WORK goes: the map publisher saves into it every 0.5 s.
+  for pid in "${PID[@]}"; do wait "$pid" 2>/dev/null || true; done
   [ -n "${KEEP_WORK:-}" ] || rm -rf "$WORK"
 }
 trap cleanup EXIT
