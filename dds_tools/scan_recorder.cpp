@@ -1,6 +1,9 @@
 // scan_recorder: subscribes to the pipeline's labelled scans and writes them
 // to a scan log, so a live run can be compared with `scanfilter replay` or
 // drawn with `scanfilter render`. Stops on SIGINT/SIGTERM or after --count scans.
+// With --progress-every it says how many it has so far, so that a launcher
+// can stop it once it holds every scan the source published
+// (deploy/run-pipeline.sh): a pause in the source is no end of it.
 #include <atomic>
 #include <cmath>
 #include <iostream>
@@ -33,6 +36,7 @@ int main(int argc, char** argv) {
   std::uint64_t count = 0;
   double timeout_s = 0;
   double idle_exit_s = 0;
+  double progress_every_s = 0;
   int queue_depth = StreamQos{}.queue_depth;
   app.add_option("-o,--output", output, "scan log to write")->required();
   app.add_option("--domain", participant_settings.domain_id, "DDS domain id")->capture_default_str();
@@ -46,6 +50,9 @@ int main(int argc, char** argv) {
   app.add_option("--count", count, "stop after this many scans (0: until SIGINT/SIGTERM)");
   app.add_option("--timeout", timeout_s, "stop after this many seconds (0: no limit)");
   app.add_option("--idle-exit", idle_exit_s, "stop once no scan arrived for this many seconds after the first (0: never)");
+  app.add_option("--progress-every", progress_every_s,
+                 "print \"progress: N scans recorded\" on stdout at most this often, when N changed (0: never)")
+      ->check(CLI::Range(0.0, 60.0));
   app.add_option("--queue-depth", queue_depth, "reliable reader queue (match the services')")->capture_default_str();
   app.add_option("--config", config,
                  "a YAML file with only a `service` section (config/scan_ingest.yaml documents it): its domain, "
@@ -81,8 +88,16 @@ int main(int argc, char** argv) {
           if (++recorded == count) ShutdownSignal::request();
         });
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+    const auto progress_period = std::chrono::duration<double>(progress_every_s);
+    auto progress_at = std::chrono::steady_clock::now();
+    std::uint64_t progress_said = 0;
     while (!ShutdownSignal::waitFor(std::chrono::milliseconds(100))) {
       const auto now = std::chrono::steady_clock::now();
+      if (progress_every_s > 0 && now - progress_at >= progress_period && recorded != progress_said) {
+        progress_said = recorded;
+        progress_at = now;
+        std::cout << "progress: " << progress_said << " scans recorded" << std::endl;  // flushed: read while it runs
+      }
       if (timeout_s > 0 && now > deadline) break;
       const auto idle = now - std::chrono::steady_clock::time_point(std::chrono::steady_clock::duration(last_arrival_ns.load()));
       if (idle_exit_s > 0 && last_arrival_ns.load() != 0 && idle > std::chrono::duration<double>(idle_exit_s)) break;

@@ -2,8 +2,9 @@
 # Starts the pipeline's processes (map_publisher, penetration_filter,
 # jump_filter, scan_ingest) and a recorder of the labelled output, prints
 # where the metrics and the output are, and stops them all by PID on Ctrl-C
-# or when the ingest has published its whole source (the map publisher then
-# saves the map).
+# or when the ingest has published its whole source and the recorder holds
+# every scan it published (the map publisher then saves the map). Exits
+# non-zero when the ingest failed or scans were lost on the way.
 #
 #   deploy/run-pipeline.sh [--scene hall | --log FILE] [--rate recorded|max|FACTOR] [--out DIR] [--domain N]
 #
@@ -21,7 +22,7 @@ while [ $# -gt 0 ]; do
     --rate) RATE="$2"; shift 2 ;;
     --out) OUT="$2"; shift 2 ;;
     --domain) DOMAIN="$2"; shift 2 ;;
-    -h|--help) sed -n 2,11p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,12p "$0"; exit 0 ;;
     *) echo "unknown argument: $1 (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -66,8 +67,11 @@ started() {  # name: remembers the PID of the process just started in the backgr
 "$BIN/services/map_publisher" --config "$MAP_CFG" > "$OUT/map_publisher.log" 2>&1 & started map_publisher
 "$BIN/services/penetration_filter" --domain "$DOMAIN" > "$OUT/penetration_filter.log" 2>&1 & started penetration_filter
 "$BIN/services/jump_filter" --domain "$DOMAIN" > "$OUT/jump_filter.log" 2>&1 & started jump_filter
-"$BIN/dds_tools/scan_recorder" --domain "$DOMAIN" --idle-exit 2 -o "$OUT/pipeline.labeled.scanlog.jsonl" \
-  > "$OUT/scan_recorder.log" 2>&1 & started scan_recorder
+# No idle exit: a recorded source may pause for as long as its log did.
+# The recorder runs until stopped below, once it holds what the ingest published.
+RECORDER_PROGRESS_S=0.2  # how often the recorder says how many scans it holds
+"$BIN/dds_tools/scan_recorder" --domain "$DOMAIN" --progress-every "$RECORDER_PROGRESS_S" \
+  -o "$OUT/pipeline.labeled.scanlog.jsonl" > "$OUT/scan_recorder.log" 2>&1 & started scan_recorder
 
 # Start the source only once every stage downstream is matched, so that no
 # stage misses the first scans. Each need: the service whose metrics endpoint
@@ -143,17 +147,28 @@ echo "metrics: http://127.0.0.1:9471/metrics (scan_ingest), :9472 (jump_filter),
 echo "topics:  rt/posed_scan -> rt/jump_filtered_scan -> rt/labeled_scan and rt/scan_filtered (sensor_msgs/LaserScan) -> rt/map"
 status=0
 wait "$INGEST" || status=$?
-if [ "$status" = 0 ]; then
-  # The recorder exits 2 s after the last scan arrived; the scans still in
-  # the filters' queues take well under a second at any rate.
+# What the ingest published (its last log line says) and what the recorder
+# holds (its last progress or final line).
+published=$(sed -n 's/.*\] published \([0-9]*\) scans$/\1/p' "$OUT/scan_ingest.log" | tail -n 1)
+recorded_so_far() {
+  sed -n 's/^progress: \([0-9]*\) scans recorded$/\1/p; s/^recorded \([0-9]*\) scans -> .*/\1/p' \
+    "$OUT/scan_recorder.log" | tail -n 1
+}
+if [ "$status" = 0 ] && [ -n "$published" ]; then
+  # The scans still in the filters' queues take well under a second at any
+  # rate; 30 s is for a loaded machine.
   for _ in $(seq 1 300); do
+    [ "${published}" -le "$(recorded_so_far || true)" ] 2>/dev/null && break
     running scan_recorder || break
     sleep 0.1
   done
-  if running scan_recorder; then
-    echo "WARNING: scan_recorder still running 30 s after scan_ingest ended; stopping it (see $OUT/scan_recorder.log)"
-  fi
 fi
-stop_all
-echo "scan_ingest exited with $status; labelled output: $OUT/pipeline.labeled.scanlog.jsonl; map: $OUT/map.png (+ .pgm/.yaml)"
+stop_all  # the recorder writes its last scans and its count as it stops
+recorded=$(recorded_so_far || true)
+echo "scan_ingest exited with $status; it published ${published:-?} scans, the recorder holds ${recorded:-0}"
+echo "labelled output: $OUT/pipeline.labeled.scanlog.jsonl; map: $OUT/map.png (+ .pgm/.yaml)"
+if [ "$status" = 0 ] && [ "${recorded:-0}" != "${published:-?}" ]; then
+  echo "ERROR: ${recorded:-0} of ${published:-?} published scans reached the recorder (see $OUT/*.log)" >&2
+  status=1
+fi
 exit "$status"

@@ -339,6 +339,28 @@ launcher)
     fail "the labelled output is not $LAUNCH labelled scans: $info"
   "$SF" diff "$WORK/launch_offline.scanlog.jsonl" "$WORK/launch/pipeline.labeled.scanlog.jsonl" ||
     fail "the launcher's labels differ from the offline replay"
+  grep -q "^scan_ingest exited with 0; it published $LAUNCH scans, the recorder holds $LAUNCH$" <<<"$out" ||
+    fail "run-pipeline.sh did not report $LAUNCH scans published and recorded"
+  # A log that pauses (the robot's logging stopped for a while), replayed at
+  # its recorded pace: the pause is no end of the source, every scan is
+  # recorded (the recorder once stopped 2 s after the last scan it got).
+  PAUSED=20 PAUSE_S=3
+  "$SF" simulate --scene hall --seed 5 --max-frames $PAUSED -o "$WORK/paused_src.scanlog.jsonl" > /dev/null
+  # Every scan after the first half (line 1 is the header) PAUSE_S later:
+  # the line's first key is its stamp, `{"stamp":S,...`.
+  awk -F'"stamp":' -v half=$((PAUSED / 2)) -v pause=$PAUSE_S '
+    NR > half + 1 { split($2, value, ","); $0 = $1 "\"stamp\":" (value[1] + pause) substr($2, length(value[1]) + 1) }
+    { print }' "$WORK/paused_src.scanlog.jsonl" > "$WORK/paused.scanlog.jsonl"
+  paused_info=$("$SF" info "$WORK/paused.scanlog.jsonl") || fail "the paused log does not read"
+  grep -q "^scans: *$PAUSED " <<<"$paused_info" || fail "the paused log is not $PAUSED scans: $paused_info"
+  set +e
+  out=$(BUILD_DIR="$BUILD" timeout -k 10 120 bash "$SRC/deploy/run-pipeline.sh" --log "$WORK/paused.scanlog.jsonl" \
+          --rate recorded --out "$WORK/paused" --domain "$DOMAIN" 2>&1)
+  code=$?
+  set -e
+  [ "$code" = 0 ] || fail "run-pipeline.sh on a log with a $PAUSE_S s pause exited with $code: $out"
+  grep -q "^scan_ingest exited with 0; it published $PAUSED scans, the recorder holds $PAUSED$" <<<"$out" ||
+    fail "run-pipeline.sh on a log with a $PAUSE_S s pause: $out"
   ;;
 *) echo "unknown case $CASE"; exit 2 ;;
 esac
