@@ -50,9 +50,12 @@ int main(int argc, char** argv) {
   app.add_option("--count", count, "stop after this many scans (0: until SIGINT/SIGTERM)");
   app.add_option("--timeout", timeout_s, "stop after this many seconds (0: no limit)");
   app.add_option("--idle-exit", idle_exit_s, "stop once no scan arrived for this many seconds after the first (0: never)");
+  // A launcher polls these lines to know when the recorder holds everything;
+  // a period beyond a minute would only make it wait.
+  constexpr double kMaxProgressEveryS = 60.0;
   app.add_option("--progress-every", progress_every_s,
                  "print \"progress: N scans recorded\" on stdout at most this often, when N changed (0: never)")
-      ->check(CLI::Range(0.0, 60.0));
+      ->check(CLI::Range(0.0, kMaxProgressEveryS));
   app.add_option("--queue-depth", queue_depth, "reliable reader queue (match the services')")->capture_default_str();
   app.add_option("--config", config,
                  "a YAML file with only a `service` section (config/scan_ingest.yaml documents it): its domain, "
@@ -93,8 +96,9 @@ int main(int argc, char** argv) {
     std::uint64_t progress_said = 0;
     while (!ShutdownSignal::waitFor(std::chrono::milliseconds(100))) {
       const auto now = std::chrono::steady_clock::now();
-      if (progress_every_s > 0 && now - progress_at >= progress_period && recorded != progress_said) {
-        progress_said = recorded;
+      const std::uint64_t holds = recorded.load();
+      if (progress_every_s > 0 && now - progress_at >= progress_period && holds != progress_said) {
+        progress_said = holds;
         progress_at = now;
         std::cout << "progress: " << progress_said << " scans recorded" << std::endl;  // flushed: read while it runs
       }

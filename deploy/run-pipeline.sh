@@ -70,6 +70,10 @@ started() {  # name: remembers the PID of the process just started in the backgr
 # No idle exit: a recorded source may pause for as long as its log did.
 # The recorder runs until stopped below, once it holds what the ingest published.
 RECORDER_PROGRESS_S=0.2  # how often the recorder says how many scans it holds
+# After the ingest ended, how long the scans still in the filters' queues
+# may take to reach the recorder: well under a second at any rate; the rest
+# is for a loaded machine.
+RECORDER_DRAIN_TIMEOUT_S=30
 "$BIN/dds_tools/scan_recorder" --domain "$DOMAIN" --progress-every "$RECORDER_PROGRESS_S" \
   -o "$OUT/pipeline.labeled.scanlog.jsonl" > "$OUT/scan_recorder.log" 2>&1 & started scan_recorder
 
@@ -148,27 +152,36 @@ echo "topics:  rt/posed_scan -> rt/jump_filtered_scan -> rt/labeled_scan and rt/
 status=0
 wait "$INGEST" || status=$?
 # What the ingest published (its last log line says) and what the recorder
-# holds (its last progress or final line).
+# holds: its progress while it runs, the line it ends with once its file is
+# in place (only that one counts at the end: a recorder that failed to
+# write its file printed progress all the same).
 published=$(sed -n 's/.*\] published \([0-9]*\) scans$/\1/p' "$OUT/scan_ingest.log" | tail -n 1)
-recorded_so_far() {
-  sed -n 's/^progress: \([0-9]*\) scans recorded$/\1/p; s/^recorded \([0-9]*\) scans -> .*/\1/p' \
-    "$OUT/scan_recorder.log" | tail -n 1
+recorder_says() {  # PATTERN with one group, the count: its last match in the recorder's log
+  sed -n "s/$1/\\1/p" "$OUT/scan_recorder.log" | tail -n 1
 }
 if [ "$status" = 0 ] && [ -n "$published" ]; then
-  # The scans still in the filters' queues take well under a second at any
-  # rate; 30 s is for a loaded machine.
-  for _ in $(seq 1 300); do
-    [ "${published}" -le "$(recorded_so_far || true)" ] 2>/dev/null && break
-    running scan_recorder || break
+  drain_deadline=$((SECONDS + RECORDER_DRAIN_TIMEOUT_S))
+  while running scan_recorder && [ "$SECONDS" -lt "$drain_deadline" ]; do
+    holds=$(recorder_says '^progress: \([0-9]*\) scans recorded$')
+    [ "${holds:-0}" -ge "$published" ] && break
     sleep 0.1
   done
 fi
-stop_all  # the recorder writes its last scans and its count as it stops
-recorded=$(recorded_so_far || true)
-echo "scan_ingest exited with $status; it published ${published:-?} scans, the recorder holds ${recorded:-0}"
+stop_all  # the recorder writes its last scans, puts its file in place and says how many
+recorded=$(recorder_says '^recorded \([0-9]*\) scans -> .*')
+echo "scan_ingest exited with $status; it published ${published:-?} scans, the recorder holds ${recorded:-?}"
 echo "labelled output: $OUT/pipeline.labeled.scanlog.jsonl; map: $OUT/map.png (+ .pgm/.yaml)"
-if [ "$status" = 0 ] && [ "${recorded:-0}" != "${published:-?}" ]; then
-  echo "ERROR: ${recorded:-0} of ${published:-?} published scans reached the recorder (see $OUT/*.log)" >&2
-  status=1
+# (Ended by the ingest's failure, its status stands; by Ctrl-C, the traps' 130.)
+if [ "$status" = 0 ]; then
+  if [ -z "$published" ]; then
+    echo "ERROR: scan_ingest did not say how many scans it published (see $OUT/scan_ingest.log)" >&2
+    status=1
+  elif [ -z "$recorded" ]; then
+    echo "ERROR: the recorder did not finish its file (see $OUT/scan_recorder.log)" >&2
+    status=1
+  elif [ "$recorded" != "$published" ]; then
+    echo "ERROR: $recorded of $published published scans reached the recorder (see the logs in $OUT/)" >&2
+    status=1
+  fi
 fi
 exit "$status"

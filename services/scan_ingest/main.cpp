@@ -72,6 +72,9 @@ int runPlayback(ServiceRuntime& runtime, const IngestSettings& settings, ScanSou
   writer.waitForAcknowledgments(runtime.settings().stream.max_blocking_s);
   spdlog::info("published {} scans", published);
   runtime.refreshGauges();
+  // A source not played to its end is a failure (a supervisor restarts the
+  // ingest, which resumes after the scans its progress file records).
+  if (player.stoppedShort()) return 1;
   if (!settings.exit_at_end) runtime.runUntilStopped();
   return 0;
 }

@@ -27,6 +27,7 @@ bool parsePlaybackRate(const std::string& text, PlaybackRate& rate) {
 }
 
 std::uint64_t ScanPlayer::play() {
+  stopped_short_ = false;
   const SensorInfo& sensor = source_.header().sensor;
   ScanRecord record;
   dds_io::LabeledScanMsg msg;
@@ -64,6 +65,7 @@ std::uint64_t ScanPlayer::play() {
       if (dds_io::ShutdownSignal::requested()) break;  // stopped while holding for a reader
       spdlog::error("scan {} not accepted by the pipeline within max_blocking_s (Fast DDS return code {}); stopping",
                     sequence, writer_.lastError());
+      stopped_short_ = true;
       break;
     }
     metrics_.scanPublished();

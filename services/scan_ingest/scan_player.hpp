@@ -33,6 +33,9 @@ class ScanPlayer {
   // Plays the whole source (from where the progress file says); returns the
   // scans published by this run.
   std::uint64_t play();
+  // Whether the last play() ended before the source's end because the
+  // pipeline did not accept a scan (not because it was asked to stop).
+  bool stoppedShort() const { return stopped_short_; }
 
  private:
   ScanSource& source_;
@@ -40,6 +43,7 @@ class ScanPlayer {
   dds_io::ServiceMetrics& metrics_;
   PlaybackRate rate_;
   const PlaybackProgress& progress_;
+  bool stopped_short_ = false;
 };
 
 // Parses a rate as written in the config: "recorded", "max" or a factor.

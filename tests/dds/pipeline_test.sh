@@ -349,10 +349,13 @@ launcher)
   # Every scan after the first half (line 1 is the header) PAUSE_S later:
   # the line's first key is its stamp, `{"stamp":S,...`.
   awk -F'"stamp":' -v half=$((PAUSED / 2)) -v pause=$PAUSE_S '
-    NR > half + 1 { split($2, value, ","); $0 = $1 "\"stamp\":" (value[1] + pause) substr($2, length(value[1]) + 1) }
+    NR > half + 1 { split($2, value, ","); $0 = $1 "\"stamp\":" sprintf("%.9f", value[1] + pause) substr($2, length(value[1]) + 1) }
     { print }' "$WORK/paused_src.scanlog.jsonl" > "$WORK/paused.scanlog.jsonl"
   paused_info=$("$SF" info "$WORK/paused.scanlog.jsonl") || fail "the paused log does not read"
   grep -q "^scans: *$PAUSED " <<<"$paused_info" || fail "the paused log is not $PAUSED scans: $paused_info"
+  # The pause is in: the log lasts longer than it (the scans alone take 2 s at 10 Hz).
+  paused_s=$(sed -n 's/^duration: *\([0-9]*\).*/\1/p' <<<"$paused_info")
+  [ "${paused_s:-0}" -ge "$PAUSE_S" ] || fail "the paused log has no $PAUSE_S s pause: $paused_info"
   set +e
   out=$(BUILD_DIR="$BUILD" timeout -k 10 120 bash "$SRC/deploy/run-pipeline.sh" --log "$WORK/paused.scanlog.jsonl" \
           --rate recorded --out "$WORK/paused" --domain "$DOMAIN" 2>&1)
@@ -361,6 +364,9 @@ launcher)
   [ "$code" = 0 ] || fail "run-pipeline.sh on a log with a $PAUSE_S s pause exited with $code: $out"
   grep -q "^scan_ingest exited with 0; it published $PAUSED scans, the recorder holds $PAUSED$" <<<"$out" ||
     fail "run-pipeline.sh on a log with a $PAUSE_S s pause: $out"
+  info=$("$SF" info "$WORK/paused/pipeline.labeled.scanlog.jsonl")
+  grep -q "^scans: *$PAUSED " <<<"$info" && grep -q "labels: $PAUSED scans" <<<"$info" ||
+    fail "the labelled output of the paused log is not $PAUSED labelled scans: $info"
   ;;
 *) echo "unknown case $CASE"; exit 2 ;;
 esac
