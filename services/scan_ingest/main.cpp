@@ -73,7 +73,7 @@ int runPlayback(ServiceRuntime& runtime, const IngestSettings& settings, ScanSou
   spdlog::info("published {} scans", published);
   runtime.refreshGauges();
   // A source not played to its end is a failure (a supervisor restarts the
-  // ingest, which resumes after the scans its progress file records).
+  // ingest, which resumes after the scans its progress file records, if set).
   if (player.stoppedShort()) return 1;
   if (!settings.exit_at_end) runtime.runUntilStopped();
   return 0;
