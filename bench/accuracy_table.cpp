@@ -63,10 +63,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> variants;
   CLI::App app{"The accuracy table of docs/accuracy.md: the shipped defaults, the paper-literal reading and step 1 "
                "alone on every built-in scene"};
-  app.add_option("--seeds", seeds, "simulator seeds scored (held out from the tuning seed)")
-      ->delimiter(',')
-      ->capture_default_str()
-      ->check(bench::kSeedCheck);
+  bench::addHeldOutSeedsOption(app, seeds);
   app.add_option("--config-dir", config_dir, "directory with filter.yaml and filter-paper-literal.yaml")
       ->capture_default_str()
       ->check(CLI::ExistingDirectory);
@@ -74,9 +71,7 @@ int main(int argc, char** argv) {
                  "sensor presets (config/sensors: tof, triangulation) or preset files, one table each; default: each "
                  "scene's own sensor")
       ->delimiter(',');
-  app.add_option("--max-frames", max_frames, "scans per simulated log (0: the whole trajectory)")
-      ->capture_default_str()
-      ->check(bench::kFrameCountCheck);
+  bench::addMaxFramesOption(app, max_frames);
   app.add_flag("--defaults-only", defaults_only,
                "score filter.yaml alone (a third of the time: for comparing a config variant)");
   app.add_option("--variant", variants,

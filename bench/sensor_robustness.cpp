@@ -97,14 +97,9 @@ int main(int argc, char** argv) {
   int max_frames = 0;
   CLI::App app{"The shipped defaults on sensors near the presets: each preset with one number changed, every "
                "built-in scene"};
-  app.add_option("--seeds", seeds, "simulator seeds scored (held out from the tuning seed)")
-      ->delimiter(',')
-      ->capture_default_str()
-      ->check(bench::kSeedCheck);
+  bench::addHeldOutSeedsOption(app, seeds);
   app.add_option("--config", config_path, "filter config file")->capture_default_str()->check(CLI::ExistingFile);
-  app.add_option("--max-frames", max_frames, "scans per simulated log (0: the whole trajectory)")
-      ->capture_default_str()
-      ->check(bench::kFrameCountCheck);
+  bench::addMaxFramesOption(app, max_frames);
   CLI11_PARSE(app, argc, argv);
 
   try {

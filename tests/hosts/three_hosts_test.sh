@@ -244,10 +244,14 @@ robot_tx0=$(counter robot eth0 tx) mapper_rx0=$(counter mapper eth0 rx)
 start robot "$WORK/ingest.log" timeout -k 5 90 "$BUILD/services/scan_ingest" --config "$WORK/ingest.yaml"
 INGEST=$STARTED
 deadline=$((SECONDS + 40))
-until grep -q "\[info\] started:" "$WORK/ingest.log"; do
-  # Ended meanwhile: it may have started and finished since the grep above.
-  kill -0 "$INGEST" 2>/dev/null || grep -q "\[info\] started:" "$WORK/ingest.log" ||
-    fail "scan_ingest on the robot ended before it started publishing"
+while :; do
+  # Whether it runs, asked before its log is read: a start it logged before
+  # ending is then in the log, and an ended ingest without one never started.
+  alive=1
+  kill -0 "$INGEST" 2>/dev/null || alive=0
+  ingest_log=$(cat "$WORK/ingest.log")
+  grep -q "\[info\] started:" <<<"$ingest_log" && break
+  [ "$alive" = 1 ] || fail "scan_ingest on the robot ended before it started publishing"
   [ "$SECONDS" -lt "$deadline" ] || fail "scan_ingest on the robot did not find its readers within 40 s"
   sleep 0.01
 done
