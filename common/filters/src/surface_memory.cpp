@@ -281,6 +281,11 @@ std::vector<SurfaceMemory::Segment> SurfaceMemory::merged(const Fresh& fresh, co
   if (hi_seen_past) hi = seen_hi;
   // The stretch seen now is new; what lies beyond it keeps the newest time
   // any of the old segments was seen, and joins it without an end margin.
+  // An old end beyond by a rounding error only leaves a piece of length 0
+  // that takes its margin and never merges again: an end seen again keeps
+  // no margin. Giving it back cost recall on every sensor preset
+  // (docs/accuracy-investigations.md, "The surface memory's end margins
+  // wear away").
   const auto at = [&](double u) { return Eigen::Vector2d(middle + direction * u); };
   const double end = params_.end_margin;
   std::vector<Segment> out{segmentBetween(at(seen_lo), at(seen_hi), now.last_seen, lo < seen_lo ? 0.0 : end,
