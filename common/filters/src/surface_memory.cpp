@@ -213,9 +213,10 @@ void SurfaceMemory::forgetSeenThroughHeadOn(std::span<const Eigen::Vector2d> poi
 }
 
 SurfaceMemory::Segment SurfaceMemory::segmentBetween(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
-                                                     Stamp last_seen, double margin_a, double margin_b) const {
+                                                     Stamp last_seen, double margin_a, double margin_b,
+                                                     const Eigen::Vector2d& direction_if_a_point) const {
   const double length = (b - a).norm();
-  const Eigen::Vector2d unit = (b - a) / length;  // neither finder makes one shorter than its min_length > 0
+  const Eigen::Vector2d unit = length > 0.0 ? Eigen::Vector2d((b - a) / length) : direction_if_a_point;
   return {a, unit, {-unit.y(), unit.x()}, length, a.cwiseMin(b), a.cwiseMax(b), last_seen, margin_a, margin_b};
 }
 
@@ -225,7 +226,9 @@ std::vector<SurfaceMemory::Fresh> SurfaceMemory::facingSegments(std::span<const 
   const double min_sin = std::sin(degreesToRadians(min_beam_surface_angle_deg));
   std::vector<Fresh> fresh;
   for (const StraightSegment& s : found) {
-    const Segment segment = segmentBetween(s.a, s.b, stamp, params_.end_margin, params_.end_margin);
+    // The finders make none shorter than their min_length > 0: never a point.
+    const Segment segment =
+        segmentBetween(s.a, s.b, stamp, params_.end_margin, params_.end_margin, Eigen::Vector2d::UnitX());
     const Eigen::Vector2d to_middle = ((s.a + s.b) / 2 - origin).normalized();
     // The sine of the angle at which the beam to its middle meets it.
     if (std::abs(cross(to_middle, segment.unit)) < min_sin) continue;
@@ -281,17 +284,20 @@ std::vector<SurfaceMemory::Segment> SurfaceMemory::merged(const Fresh& fresh, co
   if (hi_seen_past) hi = seen_hi;
   // The stretch seen now is new; what lies beyond it keeps the newest time
   // any of the old segments was seen, and joins it without an end margin.
-  // An old end beyond by a rounding error only leaves a piece of length 0
-  // that takes its margin and never merges again: an end seen again keeps
-  // no margin. Giving it back cost recall on every sensor preset
-  // (docs/accuracy-investigations.md, "The surface memory's end margins
-  // wear away").
-  const auto at = [&](double u) { return Eigen::Vector2d(middle + direction * u); };
+  // An old end beyond by a rounding error only leaves a piece of (next to)
+  // length 0 that takes its margin and never merges again: an end seen
+  // again keeps no margin. Giving it back cost recall on every sensor
+  // preset (docs/accuracy-investigations.md, "The surface memory's end
+  // margins wear away"). A piece of length 0 keeps the line's direction.
+  const auto piece = [&](double from, double to, Stamp last_seen, double margin_from, double margin_to) {
+    return segmentBetween(middle + direction * from, middle + direction * to, last_seen, margin_from, margin_to,
+                          direction);
+  };
   const double end = params_.end_margin;
-  std::vector<Segment> out{segmentBetween(at(seen_lo), at(seen_hi), now.last_seen, lo < seen_lo ? 0.0 : end,
-                                          hi > seen_hi ? 0.0 : end)};
-  if (lo < seen_lo) out.push_back(segmentBetween(at(lo), at(seen_lo), remembered, lo_margin, 0.0));
-  if (hi > seen_hi) out.push_back(segmentBetween(at(seen_hi), at(hi), remembered, 0.0, hi_margin));
+  std::vector<Segment> out{
+      piece(seen_lo, seen_hi, now.last_seen, lo < seen_lo ? 0.0 : end, hi > seen_hi ? 0.0 : end)};
+  if (lo < seen_lo) out.push_back(piece(lo, seen_lo, remembered, lo_margin, 0.0));
+  if (hi > seen_hi) out.push_back(piece(seen_hi, hi, remembered, 0.0, hi_margin));
   // One surface: what any piece was known to be, all are; the stretches
   // beyond the new one were last seen when the newest old piece was.
   bool sparse = now.sparse, pane_or_mirror = now.pane_or_mirror;

@@ -177,8 +177,9 @@ class SurfaceMemory {
     bool a_seen_past = false;
     bool b_seen_past = false;
   };
+  // From a to b; `direction_if_a_point` (a unit vector) when they coincide.
   Segment segmentBetween(const Eigen::Vector2d& a, const Eigen::Vector2d& b, Stamp last_seen, double margin_a,
-                         double margin_b) const;
+                         double margin_b, const Eigen::Vector2d& direction_if_a_point) const;
   std::vector<Fresh> facingSegments(std::span<const StraightSegment> found, const Eigen::Vector2d& origin,
                                     Stamp stamp, double min_beam_surface_angle_deg) const;
   // Each as a surface seen again (merged with what it overlaps) or new.
