@@ -1,6 +1,8 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -108,6 +110,23 @@ TEST(CarmenLog, StampsGoingBackwardsAreCountedNotFatal) {
   ASSERT_TRUE(reader.next(r));
   EXPECT_EQ(r.scan.stamp.toDecimal(), "4");
   EXPECT_EQ(reader.stampRegressions(), 1u);
+}
+
+// The csail log's stamps were written with six significant digits
+// ("1.13486e+09"), so most of its scans carry the stamp of the scan before:
+// read as written, kept, and counted apart from the regressions.
+TEST(CarmenLog, StampsEqualToTheScanBeforeAreCounted) {
+  const auto line = [](const std::string& stamp) {
+    return "FLASER 2 1.0 1.1 0 0 0 0 0 0 " + stamp + " pippo " + stamp + "\n";
+  };
+  TempFile file("csail.log", line("1.13486e+09") + line("1.13486e+09") + line("1.13486e+09") + line("1.13487e+09"));
+  CarmenLogReader reader(file.path(), {});
+  ScanRecord r;
+  std::vector<std::string> stamps;
+  while (reader.next(r)) stamps.push_back(r.scan.stamp.toDecimal());
+  EXPECT_EQ(stamps, (std::vector<std::string>{"1134860000", "1134860000", "1134860000", "1134870000"}));
+  EXPECT_EQ(reader.stampRepeats(), 2u);
+  EXPECT_EQ(reader.stampRegressions(), 0u);
 }
 
 TEST(CarmenLogErrors, NoLaserLines) {

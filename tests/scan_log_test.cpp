@@ -199,6 +199,21 @@ TEST(ScanLog, StampsGoingBackwardsAreCountedAndKept) {
   while (reader.next(r)) stamps.push_back(r.scan.stamp.toDecimal());
   EXPECT_EQ(stamps, (std::vector<std::string>{"2", "1.5", "2"}));
   EXPECT_EQ(reader.stampRegressions(), 1u);
+  EXPECT_EQ(reader.stampRepeats(), 0u);
+}
+
+// A stamp equal to the one before is counted as a repeat, not a regression.
+TEST(ScanLog, StampsEqualToTheScanBeforeAreCountedAndKept) {
+  const std::string a = R"({"stamp": 2.0, "pose": [0,0,0], "angle_min": 0, "angle_increment": 0.1, "ranges": [1]})";
+  const std::string b = R"({"stamp": 3.0, "pose": [0,0,0], "angle_min": 0, "angle_increment": 0.1, "ranges": [1]})";
+  TempFile file("same.scanlog.jsonl", kHeader + "\n" + a + "\n" + a + "\n" + b + "\n" + b + "\n" + b + "\n");
+  ScanLogReader reader(file.path());
+  ScanRecord r;
+  std::size_t scans = 0;
+  while (reader.next(r)) ++scans;
+  EXPECT_EQ(scans, 5u);
+  EXPECT_EQ(reader.stampRepeats(), 3u);
+  EXPECT_EQ(reader.stampRegressions(), 0u);
 }
 
 // Stamps a double cannot hold (about 240 ns apart at 1.7e9 s) are read as

@@ -49,7 +49,8 @@ int runInfo(const InfoOptions& options) {
             << "scans:     " << scans << " (" << min_beams << "-" << max_beams << " beams)\n"
             << "duration:  " << last.secondsSince(first) << " s (" << first.toDecimal() << " to " << last.toDecimal()
             << "), path " << path << " m\n"
-            << "stamps:    " << source->stampRegressions() << " earlier than the scan before (kept in file order)\n"
+            << "stamps:    " << source->stampRegressions() << " earlier than the scan before (kept in file order), "
+            << source->stampRepeats() << " equal to it\n"
             << "returns:   " << returns << " of " << beams << " beams\n"
             << "truth:     " << with_truth << " scans, labels: " << labelled << " scans\n";
   const auto counts = [](const char* title, const std::array<std::size_t, kPointCodeCount>& n) {

@@ -39,18 +39,19 @@ std::uint64_t ScanPlayer::play() {
     spdlog::info("resuming after the {} scans {} records as published", sequence, progress_.path());
   const std::uint64_t first_sequence = sequence;
   bool first = true;
-  Stamp first_stamp;
+  Stamp first_stamp, previous_stamp;
   const auto start = std::chrono::steady_clock::now();
   const double held_at_start = writer_.heldSeconds();
   while (!dds_io::ShutdownSignal::requested() && source_.next(record)) {
-    if (first) first_stamp = record.scan.stamp, first = false;
+    if (first) first_stamp = previous_stamp = record.scan.stamp, first = false;
     if (!rate_.as_fast_as_accepted) {
       // Sleep until the scan's recorded time, scaled by the speed; the time
       // the writer held (no reader downstream) does not count.
       const double due_s = record.scan.stamp.secondsSince(first_stamp) / rate_.speed + (writer_.heldSeconds() - held_at_start);
-      std::this_thread::sleep_until(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                                std::chrono::duration<double>(due_s)));
+      waitFor(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(due_s)),
+              sequence, record.scan.stamp.secondsSince(previous_stamp));
     }
+    previous_stamp = record.scan.stamp;
     record.scan.labels.clear();  // the filters write labels; a log's old ones are not passed on
     const dds_io::TimeMsg received = dds_io::wallClockNow();
     dds_io::toMessage(record.scan, sensor, sequence, msg);
@@ -72,6 +73,16 @@ std::uint64_t ScanPlayer::play() {
     ++sequence;
   }
   return sequence - first_sequence;
+}
+
+void ScanPlayer::waitFor(std::chrono::steady_clock::time_point due, std::uint64_t sequence,
+                         double since_previous_s) const {
+  const double wait_s = std::chrono::duration<double>(due - std::chrono::steady_clock::now()).count();
+  if (rate_.wait_notice_s > 0.0 && wait_s > rate_.wait_notice_s)
+    spdlog::info("waiting {:.1f} s for scan {}: the recording has {:.1f} s between it and the scan before "
+                 "(source.rate: max, or a speed factor, plays faster)",
+                 wait_s, sequence, since_previous_s);
+  std::this_thread::sleep_until(due);
 }
 
 }  // namespace scanfilter::ingest

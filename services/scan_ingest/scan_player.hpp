@@ -1,4 +1,5 @@
 #pragma once
+#include <chrono>
 #include <cstdint>
 #include <string>
 
@@ -15,6 +16,9 @@ namespace scanfilter::ingest {
 struct PlaybackRate {
   bool as_fast_as_accepted = false;  // "max": the pipeline's reliable queues set the pace, nothing is lost
   double speed = 1.0;                // multiple of the recorded speed otherwise
+  // A wait longer than this (s) for the next scan is logged first, so that a
+  // pause in the recording is not taken for a hang; 0: never.
+  double wait_notice_s = 5.0;
 };
 
 // Publishes every scan of a source as a posed LabeledScan, paced by the
@@ -38,6 +42,9 @@ class ScanPlayer {
   bool stoppedShort() const { return stopped_short_; }
 
  private:
+  // Sleeps until the scan's due time (s after the start), first saying so if that is long.
+  void waitFor(std::chrono::steady_clock::time_point due, std::uint64_t sequence, double since_previous_s) const;
+
   ScanSource& source_;
   Writer& writer_;
   dds_io::ServiceMetrics& metrics_;

@@ -343,8 +343,10 @@ launcher)
     fail "run-pipeline.sh did not report $LAUNCH scans published and recorded"
   # A log that pauses (the robot's logging stopped for a while), replayed at
   # its recorded pace: the pause is no end of the source, every scan is
-  # recorded (the recorder once stopped 2 s after the last scan it got).
-  PAUSED=20 PAUSE_S=3
+  # recorded (the recorder once stopped 2 s after the last scan it got), and
+  # the ingest says why it waits (the pause is longer than the default
+  # playback.wait_notice_s, 5 s).
+  PAUSED=20 PAUSE_S=6
   "$SF" simulate --scene hall --seed 5 --max-frames $PAUSED -o "$WORK/paused_src.scanlog.jsonl" > /dev/null
   # Every scan after the first half (line 1 is the header) PAUSE_S later:
   # the line's first key is its stamp, `{"stamp":S,...`.
@@ -367,6 +369,11 @@ launcher)
   info=$("$SF" info "$WORK/paused/pipeline.labeled.scanlog.jsonl")
   grep -q "^scans: *$PAUSED " <<<"$info" && grep -q "labels: $PAUSED scans" <<<"$info" ||
     fail "the labelled output of the paused log is not $PAUSED labelled scans: $info"
+  ingest_log=$(cat "$WORK/paused/scan_ingest.log")
+  notices=$(grep -c "waiting [0-9.]* s for scan $((PAUSED / 2)): the recording has $PAUSE_S\.[0-9] s between it" <<<"$ingest_log" || true)
+  [ "$notices" = 1 ] || fail "scan_ingest did not say once that it waits for the pause: $ingest_log"
+  waits=$(grep -c "waiting [0-9.]* s for scan" <<<"$ingest_log" || true)
+  [ "$waits" = 1 ] || fail "scan_ingest announced waits where the log has no pause: $ingest_log"
   ;;
 *) echo "unknown case $CASE"; exit 2 ;;
 esac

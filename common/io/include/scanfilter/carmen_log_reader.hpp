@@ -28,6 +28,7 @@ class CarmenLogReader final : public ScanSource {
   // Scans whose stamp is earlier than the one before. Real logs have them
   // (intel: line 5647); file order is kept as the sequence and they are counted.
   std::size_t stampRegressions() const override { return stamp_order_.regressions(); }
+  std::size_t stampRepeats() const override { return stamp_order_.repeats(); }
 
  private:
   bool readScanLine(std::string& line);

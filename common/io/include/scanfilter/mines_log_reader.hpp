@@ -40,6 +40,7 @@ class MinesLogReader final : public ScanSource {
   const ScanLogHeader& header() const override { return header_; }
   bool next(ScanRecord& record) override;
   std::size_t stampRegressions() const override { return stamp_order_.regressions(); }
+  std::size_t stampRepeats() const override { return stamp_order_.repeats(); }
 
   // True when a line looks like a Mines log line (707 fields, integer first).
   static bool looksLikeMinesLine(const std::string& line);

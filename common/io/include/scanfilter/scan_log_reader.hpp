@@ -19,6 +19,7 @@ class ScanLogReader final : public ScanSource {
   const ScanLogHeader& header() const override { return header_; }
   bool next(ScanRecord& record) override;
   std::size_t stampRegressions() const override { return stamp_order_.regressions(); }
+  std::size_t stampRepeats() const override { return stamp_order_.repeats(); }
 
   // Upper bound on a believable range (m): larger values are corrupt data,
   // not "out of range", and are rejected.

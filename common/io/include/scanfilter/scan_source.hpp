@@ -27,6 +27,8 @@ class ScanSource {
   // Scans so far whose stamp is earlier than the one before (kept in file
   // order, warned about once).
   virtual std::size_t stampRegressions() const { return 0; }
+  // Scans so far whose stamp equals the one before (warned about once).
+  virtual std::size_t stampRepeats() const { return 0; }
 };
 
 // Options for logs whose header does not say everything.
