@@ -42,7 +42,8 @@ class ScanPlayer {
   bool stoppedShort() const { return stopped_short_; }
 
  private:
-  // Sleeps until the scan's due time (s after the start), first saying so if that is long.
+  // Sleeps until `due`, the time scan `sequence` is to go out, first saying
+  // so when that is more than wait_notice_s away.
   void waitFor(std::chrono::steady_clock::time_point due, std::uint64_t sequence, double since_previous_s) const;
 
   ScanSource& source_;

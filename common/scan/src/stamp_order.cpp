@@ -9,8 +9,8 @@ void StampOrder::check(Stamp stamp, std::size_t line) {
     spdlog::warn("{}:{}: {} {} is earlier than the previous scan's {}; kept in file order "
                  "(further regressions are counted, not logged)",
                  path_, line, what_, stamp.toDecimal(), last_.toDecimal());
-  // The filter's time-based settings (frame_lifetime, the surface memory's
-  // lifetimes, cache_min_interval) then see no time pass: say so once.
+  // The filter's settings in seconds (frame_lifetime, the surface memory's
+  // lifetimes) then see no time pass between the two: say so once.
   if (have_last_ && stamp == last_ && repeats_++ == 0)
     spdlog::warn("{}:{}: {} {} equals the previous scan's; settings in seconds (frame_lifetime, the surface "
                  "memory's lifetimes) cannot tell such scans apart (further repeats are counted, not logged)",
