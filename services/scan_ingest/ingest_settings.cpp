@@ -38,10 +38,10 @@ IngestSettings readIngestSettings(const dds_io::ServiceConfigFile& config) {
   playback.read("wait_timeout_s", s.wait_timeout_s);
   playback.read("exit_at_end", s.exit_at_end);
   playback.read("progress_path", s.progress_path);
-  playback.read("wait_notice_s", s.rate.wait_notice_s);
-  playback.requireRange("wait_notice_s", s.rate.wait_notice_s, 0, 86400, "0-86400 (s; 0: never)");
+  playback.read("wait_notice_s", s.wait_notice_s);
   if (!s.progress_path.empty()) s.progress_path = config.resolvePath(s.progress_path);
   playback.requireRange("wait_for_subscribers", s.wait_for_subscribers, 0, 1000, "an integer 0-1000");
+  playback.requireRange("wait_notice_s", s.wait_notice_s, 0, 86400, "0-86400 (s; 0: never)");
   playback.rejectUnknownKeys();
   return s;
 }

@@ -22,6 +22,7 @@ struct IngestSettings {
   double wait_timeout_s = 30.0;
   bool exit_at_end = true;
   std::string progress_path;
+  double wait_notice_s = 5.0;
 };
 
 // Reads and validates the sections; throws InputError naming file, line and key.

@@ -67,7 +67,7 @@ int runPlayback(ServiceRuntime& runtime, const IngestSettings& settings, ScanSou
                 ingest::ScanPlayer::Writer& writer) {
   runtime.logStarted();
   const ingest::PlaybackProgress progress(settings.progress_path);
-  ingest::ScanPlayer player(source, writer, runtime.metrics(), settings.rate, progress);
+  ingest::ScanPlayer player(source, writer, runtime.metrics(), settings.rate, progress, settings.wait_notice_s);
   const std::uint64_t published = player.play();
   writer.waitForAcknowledgments(runtime.settings().stream.max_blocking_s);
   spdlog::info("published {} scans", published);

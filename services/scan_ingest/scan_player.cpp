@@ -1,8 +1,8 @@
 #include "scan_player.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
-#include <thread>
 
 #include <spdlog/spdlog.h>
 
@@ -39,19 +39,20 @@ std::uint64_t ScanPlayer::play() {
     spdlog::info("resuming after the {} scans {} records as published", sequence, progress_.path());
   const std::uint64_t first_sequence = sequence;
   bool first = true;
-  Stamp first_stamp, previous_stamp;
+  Stamp first_stamp, latest_stamp;  // the pause before a scan counts from the latest stamp played, not a regression
   const auto start = std::chrono::steady_clock::now();
   const double held_at_start = writer_.heldSeconds();
   while (!dds_io::ShutdownSignal::requested() && source_.next(record)) {
-    if (first) first_stamp = previous_stamp = record.scan.stamp, first = false;
+    if (first) first_stamp = latest_stamp = record.scan.stamp, first = false;
     if (!rate_.as_fast_as_accepted) {
       // Sleep until the scan's recorded time, scaled by the speed; the time
       // the writer held (no reader downstream) does not count.
       const double due_s = record.scan.stamp.secondsSince(first_stamp) / rate_.speed + (writer_.heldSeconds() - held_at_start);
       waitFor(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(due_s)),
-              sequence, record.scan.stamp.secondsSince(previous_stamp));
+              sequence, record.scan.stamp.secondsSince(latest_stamp) / rate_.speed);
+      if (dds_io::ShutdownSignal::requested()) break;  // stopped while waiting
     }
-    previous_stamp = record.scan.stamp;
+    latest_stamp = std::max(latest_stamp, record.scan.stamp);
     record.scan.labels.clear();  // the filters write labels; a log's old ones are not passed on
     const dds_io::TimeMsg received = dds_io::wallClockNow();
     dds_io::toMessage(record.scan, sensor, sequence, msg);
@@ -75,14 +76,18 @@ std::uint64_t ScanPlayer::play() {
   return sequence - first_sequence;
 }
 
-void ScanPlayer::waitFor(std::chrono::steady_clock::time_point due, std::uint64_t sequence,
-                         double since_previous_s) const {
-  const double wait_s = std::chrono::duration<double>(due - std::chrono::steady_clock::now()).count();
-  if (rate_.wait_notice_s > 0.0 && wait_s > rate_.wait_notice_s)
-    spdlog::info("waiting {:.1f} s for scan {}: the recording has {:.1f} s between it and the scan before "
-                 "(source.rate: max, or a speed factor, plays faster)",
-                 wait_s, sequence, since_previous_s);
-  std::this_thread::sleep_until(due);
+void ScanPlayer::waitFor(std::chrono::steady_clock::time_point due, std::uint64_t sequence, double pause_s) const {
+  using std::chrono::steady_clock;
+  // Decided on the recording, not on the time left: the same log says the
+  // same, however busy the machine.
+  if (wait_notice_s_ > 0.0 && pause_s > wait_notice_s_)
+    spdlog::info("waiting {:.1f} s for scan {}: the recording pauses {:.1f} s before it "
+                 "(source.rate: max, or a larger speed factor, plays faster)",
+                 std::max(0.0, std::chrono::duration<double>(due - steady_clock::now()).count()), sequence, pause_s);
+  // On the shutdown signal, which SIGINT/SIGTERM wake at once: a plain sleep
+  // resumes after a signal, and a pause of hours kept them waiting as long.
+  for (auto now = steady_clock::now(); now < due && !dds_io::ShutdownSignal::requested(); now = steady_clock::now())
+    dds_io::ShutdownSignal::waitFor(std::chrono::ceil<std::chrono::milliseconds>(due - now));
 }
 
 }  // namespace scanfilter::ingest

@@ -16,9 +16,6 @@ namespace scanfilter::ingest {
 struct PlaybackRate {
   bool as_fast_as_accepted = false;  // "max": the pipeline's reliable queues set the pace, nothing is lost
   double speed = 1.0;                // multiple of the recorded speed otherwise
-  // A wait longer than this (s) for the next scan is logged first, so that a
-  // pause in the recording is not taken for a hang; 0: never.
-  double wait_notice_s = 5.0;
 };
 
 // Publishes every scan of a source as a posed LabeledScan, paced by the
@@ -30,9 +27,16 @@ class ScanPlayer {
  public:
   using Writer = dds_io::TypedWriter<scanfilter_msgs::msg::dds_::LabeledScan_PubSubType>;
 
+  // A pause of more than `wait_notice_s` in the recording (at the rate's
+  // speed) is logged before the wait, so that it is not taken for a hang; 0: never.
   ScanPlayer(ScanSource& source, Writer& writer, dds_io::ServiceMetrics& metrics, PlaybackRate rate,
-             const PlaybackProgress& progress)
-      : source_(source), writer_(writer), metrics_(metrics), rate_(rate), progress_(progress) {}
+             const PlaybackProgress& progress, double wait_notice_s)
+      : source_(source),
+        writer_(writer),
+        metrics_(metrics),
+        rate_(rate),
+        progress_(progress),
+        wait_notice_s_(wait_notice_s) {}
 
   // Plays the whole source (from where the progress file says); returns the
   // scans published by this run.
@@ -42,15 +46,17 @@ class ScanPlayer {
   bool stoppedShort() const { return stopped_short_; }
 
  private:
-  // Sleeps until `due`, the time scan `sequence` is to go out, first saying
-  // so when that is more than wait_notice_s away.
-  void waitFor(std::chrono::steady_clock::time_point due, std::uint64_t sequence, double since_previous_s) const;
+  // Sleeps until `due`, the time scan `sequence` is to go out, or until a
+  // shutdown is requested; first says so when the recording pauses there
+  // (`pause_s`, at the rate's speed) for more than wait_notice_s.
+  void waitFor(std::chrono::steady_clock::time_point due, std::uint64_t sequence, double pause_s) const;
 
   ScanSource& source_;
   Writer& writer_;
   dds_io::ServiceMetrics& metrics_;
   PlaybackRate rate_;
   const PlaybackProgress& progress_;
+  double wait_notice_s_;
   bool stopped_short_ = false;
 };
 

@@ -344,8 +344,8 @@ launcher)
   # A log that pauses (the robot's logging stopped for a while), replayed at
   # its recorded pace: the pause is no end of the source, every scan is
   # recorded (the recorder once stopped 2 s after the last scan it got), and
-  # the ingest says why it waits (the pause is longer than the default
-  # playback.wait_notice_s, 5 s).
+  # the ingest says why it waits: the pause, with the scan period before it
+  # (0.1 s), is longer than the default playback.wait_notice_s, 5 s.
   PAUSED=20 PAUSE_S=6
   "$SF" simulate --scene hall --seed 5 --max-frames $PAUSED -o "$WORK/paused_src.scanlog.jsonl" > /dev/null
   # Every scan after the first half (line 1 is the header) PAUSE_S later:
@@ -370,10 +370,41 @@ launcher)
   grep -q "^scans: *$PAUSED " <<<"$info" && grep -q "labels: $PAUSED scans" <<<"$info" ||
     fail "the labelled output of the paused log is not $PAUSED labelled scans: $info"
   ingest_log=$(cat "$WORK/paused/scan_ingest.log")
-  notices=$(grep -c "waiting [0-9.]* s for scan $((PAUSED / 2)): the recording has $PAUSE_S\.[0-9] s between it" <<<"$ingest_log" || true)
+  notices=$(grep -c "waiting [0-9.]* s for scan $((PAUSED / 2)): the recording pauses $PAUSE_S\.1 s before it" <<<"$ingest_log" || true)
   [ "$notices" = 1 ] || fail "scan_ingest did not say once that it waits for the pause: $ingest_log"
   waits=$(grep -c "waiting [0-9.]* s for scan" <<<"$ingest_log" || true)
   [ "$waits" = 1 ] || fail "scan_ingest announced waits where the log has no pause: $ingest_log"
+  # A pause of an hour (the csail CARMEN log's stamps jump 10,000 s): SIGTERM
+  # during the wait ends the ingest at once, with the scans before it published.
+  awk -F'"stamp":' -v half=$((PAUSED / 2)) '
+    NR > half + 1 { split($2, value, ","); $0 = $1 "\"stamp\":" sprintf("%.9f", value[1] + 3600) substr($2, length(value[1]) + 1) }
+    { print }' "$WORK/paused_src.scanlog.jsonl" > "$WORK/hour.scanlog.jsonl"
+  cat > "$WORK/hour_ingest.yaml" <<YAML
+service: {domain_id: $DOMAIN, profiles_file: $SRC/deploy/fastdds-loopback.xml, metrics_address: 127.0.0.1:19471}
+source: {kind: log, path: $WORK/hour.scanlog.jsonl, rate: recorded}
+playback: {wait_for_subscribers: 0, exit_at_end: true}
+YAML
+  "$BUILD/services/scan_ingest" --config "$WORK/hour_ingest.yaml" > "$WORK/hour_ingest.log" 2>&1 &
+  HOUR=$!; PIDS+=($HOUR)
+  deadline=$((SECONDS + 30))
+  until grep -q "waiting [0-9.]* s for scan $((PAUSED / 2)): the recording pauses 3600.1 s" "$WORK/hour_ingest.log"; do
+    [ "$SECONDS" -lt "$deadline" ] || fail "scan_ingest did not announce the hour's wait: $(cat "$WORK/hour_ingest.log")"
+    sleep 0.1
+  done
+  stop_ms=$(date +%s%3N)
+  kill -TERM "$HOUR"
+  # Polled, not waited for: an ingest that sleeps on must fail the test, not hang it.
+  while kill -0 "$HOUR" 2>/dev/null && [ $(( $(date +%s%3N) - stop_ms )) -lt $((3000 * TIME_FACTOR)) ]; do sleep 0.05; done
+  kill -0 "$HOUR" 2>/dev/null && fail "scan_ingest still runs $((3 * TIME_FACTOR)) s after SIGTERM in a wait"
+  stopped_ms=$(( $(date +%s%3N) - stop_ms ))
+  set +e
+  wait "$HOUR"
+  code=$?
+  set -e
+  echo "scan_ingest stopped within ${stopped_ms} ms of SIGTERM in an hour's wait"
+  [ "$code" = 0 ] || fail "scan_ingest exited with $code on SIGTERM in a wait: $(cat "$WORK/hour_ingest.log")"
+  grep -q "published $((PAUSED / 2)) scans" "$WORK/hour_ingest.log" ||
+    fail "scan_ingest did not publish the $((PAUSED / 2)) scans before the wait: $(cat "$WORK/hour_ingest.log")"
   ;;
 *) echo "unknown case $CASE"; exit 2 ;;
 esac
