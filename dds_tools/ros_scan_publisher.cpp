@@ -5,7 +5,6 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
-#include <thread>
 
 #include <CLI/CLI.hpp>
 
@@ -100,8 +99,9 @@ int main(int argc, char** argv) {
       const Scan& s = record.scan;
       if (published == 0) first_stamp = s.stamp;
       const double due_s = rate_hz > 0 ? static_cast<double>(published) / rate_hz : s.stamp.secondsSince(first_stamp);
-      std::this_thread::sleep_until(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                                std::chrono::duration<double>(due_s)));
+      if (ShutdownSignal::waitUntil(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                std::chrono::duration<double>(due_s))))
+        break;  // stopped while waiting for the scan's time
       odom_msg.header().stamp(toTimeMsg(s.stamp));
       odom_msg.pose().pose().position().x(s.pose.x);
       odom_msg.pose().pose().position().y(s.pose.y);

@@ -77,3 +77,24 @@ TEST(ShutdownSignal, RequestWakesAWaiter) {
   EXPECT_TRUE(requested);
   EXPECT_LT(seconds, std::chrono::duration<double>(kPromptly).count());
 }
+
+TEST(ShutdownSignal, WaitUntilSleepsToItsTimeWithoutARequest) {
+  const auto due = Clock::now() + std::chrono::milliseconds(300);
+  EXPECT_FALSE(ShutdownSignal::waitUntil(due));
+  EXPECT_GE(Clock::now(), due);
+}
+
+// A paced source waiting out a recording's long pause (the csail CARMEN
+// log's stamps jump 10,000 s) stops as soon as it is asked to.
+TEST(ShutdownSignal, RequestEndsAWaitUntilAtOnce) {
+  auto waiter = std::async(std::launch::async, [] {
+    const auto start = Clock::now();
+    const bool requested = ShutdownSignal::waitUntil(start + kLongWait);
+    return std::pair{std::chrono::duration<double>(Clock::now() - start).count(), requested};
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  ShutdownSignal::request();
+  const auto [seconds, requested] = waiter.get();
+  EXPECT_TRUE(requested);
+  EXPECT_LT(seconds, std::chrono::duration<double>(kPromptly).count());
+}

@@ -84,10 +84,7 @@ void ScanPlayer::waitFor(std::chrono::steady_clock::time_point due, std::uint64_
     spdlog::info("waiting {:.1f} s for scan {}: the recording pauses {:.1f} s before it "
                  "(source.rate: max, or a larger speed factor, plays faster)",
                  std::max(0.0, std::chrono::duration<double>(due - steady_clock::now()).count()), sequence, pause_s);
-  // On the shutdown signal, which SIGINT/SIGTERM wake at once: a plain sleep
-  // resumes after a signal, and a pause of hours kept them waiting as long.
-  for (auto now = steady_clock::now(); now < due && !dds_io::ShutdownSignal::requested(); now = steady_clock::now())
-    dds_io::ShutdownSignal::waitFor(std::chrono::ceil<std::chrono::milliseconds>(due - now));
+  dds_io::ShutdownSignal::waitUntil(due);  // SIGINT/SIGTERM end it at once, however long the pause
 }
 
 }  // namespace scanfilter::ingest

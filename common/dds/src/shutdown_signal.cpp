@@ -68,4 +68,12 @@ bool ShutdownSignal::waitFor(std::chrono::milliseconds timeout) {
   return g_requested.load();
 }
 
+bool ShutdownSignal::waitUntil(std::chrono::steady_clock::time_point due) {
+  using std::chrono::steady_clock;
+  // Rounded up, so that the last wait does not end just short of `due` and spin.
+  for (auto now = steady_clock::now(); now < due && !g_requested.load(); now = steady_clock::now())
+    waitFor(std::chrono::ceil<std::chrono::milliseconds>(due - now));
+  return g_requested.load();
+}
+
 }  // namespace scanfilter::dds_io
