@@ -47,9 +47,11 @@ std::uint64_t ScanPlayer::play() {
     if (!rate_.as_fast_as_accepted) {
       // Sleep until the scan's recorded time, scaled by the speed; the time
       // the writer held (no reader downstream) does not count.
-      const double due_s = record.scan.stamp.secondsSince(first_stamp) / rate_.speed + (writer_.heldSeconds() - held_at_start);
-      waitFor(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(due_s)),
-              sequence, record.scan.stamp.secondsSince(latest_stamp) / rate_.speed);
+      const double due_s =
+          record.scan.stamp.secondsSince(first_stamp) / rate_.speed + (writer_.heldSeconds() - held_at_start);
+      const auto due = start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                   std::chrono::duration<double>(due_s));
+      waitUntilDue(due, sequence, record.scan.stamp.secondsSince(latest_stamp) / rate_.speed);
       if (dds_io::ShutdownSignal::requested()) break;  // stopped while waiting
     }
     latest_stamp = std::max(latest_stamp, record.scan.stamp);
@@ -76,7 +78,7 @@ std::uint64_t ScanPlayer::play() {
   return sequence - first_sequence;
 }
 
-void ScanPlayer::waitFor(std::chrono::steady_clock::time_point due, std::uint64_t sequence, double pause_s) const {
+void ScanPlayer::waitUntilDue(std::chrono::steady_clock::time_point due, std::uint64_t sequence, double pause_s) const {
   using std::chrono::steady_clock;
   // Decided on the recording, not on the time left: the same log says the
   // same, however busy the machine.

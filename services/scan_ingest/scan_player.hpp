@@ -49,7 +49,7 @@ class ScanPlayer {
   // Sleeps until `due`, the time scan `sequence` is to go out, or until a
   // shutdown is requested; first says so when the recording pauses there
   // (`pause_s`, at the rate's speed) for more than wait_notice_s.
-  void waitFor(std::chrono::steady_clock::time_point due, std::uint64_t sequence, double pause_s) const;
+  void waitUntilDue(std::chrono::steady_clock::time_point due, std::uint64_t sequence, double pause_s) const;
 
   ScanSource& source_;
   Writer& writer_;

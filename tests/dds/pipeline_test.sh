@@ -348,11 +348,13 @@ launcher)
   # (0.1 s), is longer than the default playback.wait_notice_s, 5 s.
   PAUSED=20 PAUSE_S=6
   "$SF" simulate --scene hall --seed 5 --max-frames $PAUSED -o "$WORK/paused_src.scanlog.jsonl" > /dev/null
-  # Every scan after the first half (line 1 is the header) PAUSE_S later:
-  # the line's first key is its stamp, `{"stamp":S,...`.
-  awk -F'"stamp":' -v half=$((PAUSED / 2)) -v pause=$PAUSE_S '
-    NR > half + 1 { split($2, value, ","); $0 = $1 "\"stamp\":" sprintf("%.9f", value[1] + pause) substr($2, length(value[1]) + 1) }
-    { print }' "$WORK/paused_src.scanlog.jsonl" > "$WORK/paused.scanlog.jsonl"
+  paused_copy() {  # SECONDS OUT: the log with every scan after its first half that much later
+    # Line 1 is the header; a scan line's first key is its stamp, `{"stamp":S,...`.
+    awk -F'"stamp":' -v half=$((PAUSED / 2)) -v pause="$1" '
+      NR > half + 1 { split($2, value, ","); $0 = $1 "\"stamp\":" sprintf("%.9f", value[1] + pause) substr($2, length(value[1]) + 1) }
+      { print }' "$WORK/paused_src.scanlog.jsonl" > "$2"
+  }
+  paused_copy "$PAUSE_S" "$WORK/paused.scanlog.jsonl"
   paused_info=$("$SF" info "$WORK/paused.scanlog.jsonl") || fail "the paused log does not read"
   grep -q "^scans: *$PAUSED " <<<"$paused_info" || fail "the paused log is not $PAUSED scans: $paused_info"
   # The pause is in: the log lasts longer than it (the scans alone take 2 s at 10 Hz).
@@ -376,9 +378,7 @@ launcher)
   [ "$waits" = 1 ] || fail "scan_ingest announced waits where the log has no pause: $ingest_log"
   # A pause of an hour (the csail CARMEN log's stamps jump 10,000 s): SIGTERM
   # during the wait ends the ingest at once, with the scans before it published.
-  awk -F'"stamp":' -v half=$((PAUSED / 2)) '
-    NR > half + 1 { split($2, value, ","); $0 = $1 "\"stamp\":" sprintf("%.9f", value[1] + 3600) substr($2, length(value[1]) + 1) }
-    { print }' "$WORK/paused_src.scanlog.jsonl" > "$WORK/hour.scanlog.jsonl"
+  paused_copy 3600 "$WORK/hour.scanlog.jsonl"
   cat > "$WORK/hour_ingest.yaml" <<YAML
 service: {domain_id: $DOMAIN, profiles_file: $SRC/deploy/fastdds-loopback.xml, metrics_address: 127.0.0.1:19471}
 source: {kind: log, path: $WORK/hour.scanlog.jsonl, rate: recorded}
