@@ -1,7 +1,6 @@
 #pragma once
-// Checks of the accuracy programs' command-line values where CLI11's own say
-// too little: CLI11 2.1 reads "-1" as the seed 2^64 - 1 without a word, and
-// its NonNegativeNumber names DBL_MAX as the upper limit.
+// The accuracy programs' shared options and their checks
+// (scanfilter/cli/option_checks.hpp says why CLI11's own are not used).
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -9,15 +8,12 @@
 
 #include <CLI/CLI.hpp>
 
+#include "scanfilter/cli/option_checks.hpp"
+
 namespace scanfilter::bench {
 
 // A simulator seed: digits only.
-inline const CLI::Validator kSeedCheck(
-    [](std::string& value) -> std::string {
-      const bool digits = !value.empty() && value.find_first_not_of("0123456789") == std::string::npos;
-      return digits ? std::string() : "a seed is a non-negative integer, not " + value;
-    },
-    "SEED");
+inline const CLI::Validator kSeedCheck = cli::wholeNumber("a seed");
 
 // Scans per simulated log: 0 (the whole trajectory) or more.
 inline const CLI::Range kFrameCountCheck(0, std::numeric_limits<int>::max(), "FRAMES");

@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "scanfilter/cli/option_checks.hpp"
 #include "scanfilter/dds/dds_participant.hpp"
 #include "scanfilter/dds/default_paths.hpp"
 #include "scanfilter/dds/scan_message.hpp"
@@ -47,6 +48,9 @@ void toLaserScan(const Scan& scan, const SensorInfo& sensor, bool upside_down, c
 
 }  // namespace
 
+// A launcher waiting for more readers than this has a typo, not a fleet.
+constexpr int kMaxWaitReaders = 1000;
+
 int main(int argc, char** argv) {
   CLI::App app{"ros_scan_publisher: publish a scan log as LaserScan (rt/<ns>/scan) and Odometry (rt/<ns>/odom)"};
   // Bad arguments: one line (what and which), no usage dump.
@@ -59,15 +63,17 @@ int main(int argc, char** argv) {
   int wait_readers = 1;
   bool reliable = false;
   bool upside_down = false;
-  app.add_option("input", input, "scan log or CARMEN log")->required()->check(CLI::ExistingFile);
-  app.add_option("--domain", settings.domain_id, "DDS domain id")->capture_default_str();
+  app.add_option("input", input, "scan log, CARMEN log or Mines URG-04LX log")->required()->check(CLI::ExistingFile);
+  app.add_option("--domain", settings.domain_id, "DDS domain id")->check(CLI::Range(0, kMaxDomainId))->capture_default_str();
   app.add_option("--namespace", ns, "topic namespace (rt/<ns>/scan)");
   app.add_option("--profiles-file", settings.profiles_file, "Fast DDS XML profiles")->capture_default_str();
   app.add_option("--enclave", settings.security.enclave,
                  "DDS Security enclave directory (deploy/security/make-keystore.sh; default: security off)");
   app.add_option("--frame-id", frame, "LaserScan frame_id")->capture_default_str();
-  app.add_option("--rate", rate_hz, "scans per second (0: the recorded pace)");
-  app.add_option("--wait-readers", wait_readers, "wait for this many scan readers before publishing")->capture_default_str();
+  app.add_option("--rate", rate_hz, "scans per second (0: the recorded pace)")->check(scanfilter::cli::numberAtLeast(0.0, "scans per second"));
+  app.add_option("--wait-readers", wait_readers, "wait for this many scan readers before publishing")
+      ->check(CLI::Range(0, kMaxWaitReaders))
+      ->capture_default_str();
   app.add_flag("--upside-down", upside_down,
                "publish as a sensor mounted upside down (roll pi) would: a clockwise log's angles as recorded");
   app.add_flag("--reliable", reliable, "reliable writers (default: best effort, as sensor drivers publish)");

@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "scanfilter/cli/option_checks.hpp"
 #include "scanfilter/dds/dds_participant.hpp"
 #include "scanfilter/dds/default_paths.hpp"
 #include "scanfilter/dds/scan_message.hpp"
@@ -39,7 +40,9 @@ int main(int argc, char** argv) {
   double progress_every_s = 0;
   int queue_depth = StreamQos{}.queue_depth;
   app.add_option("-o,--output", output, "scan log to write")->required();
-  app.add_option("--domain", participant_settings.domain_id, "DDS domain id")->capture_default_str();
+  app.add_option("--domain", participant_settings.domain_id, "DDS domain id")
+      ->check(CLI::Range(0, kMaxDomainId))
+      ->capture_default_str();
   app.add_option("--namespace", ns, "topic namespace (rt/<ns>/...)");
   app.add_option("--topic", topic, "topic name under rt/<ns>/")->capture_default_str();
   app.add_option("--profiles-file", participant_settings.profiles_file, "Fast DDS XML profiles")->capture_default_str();
@@ -47,16 +50,20 @@ int main(int argc, char** argv) {
   app.add_option("--enclave", enclave,
                  "DDS Security enclave directory (deploy/security/make-keystore.sh; default: security off, or "
                  "--config's service.security)");
-  app.add_option("--count", count, "stop after this many scans (0: until SIGINT/SIGTERM)");
-  app.add_option("--timeout", timeout_s, "stop after this many seconds (0: no limit)");
-  app.add_option("--idle-exit", idle_exit_s, "stop once no scan arrived for this many seconds after the first (0: never)");
+  app.add_option("--count", count, "stop after this many scans (0: until SIGINT/SIGTERM)")
+      ->check(cli::wholeNumber("a scan count"));
+  app.add_option("--timeout", timeout_s, "stop after this many seconds (0: no limit)")->check(cli::numberAtLeast(0.0, "s"));
+  app.add_option("--idle-exit", idle_exit_s, "stop once no scan arrived for this many seconds after the first (0: never)")
+      ->check(cli::numberAtLeast(0.0, "s"));
   // A launcher polls these lines to know when the recorder holds everything;
   // a period beyond a minute would only make it wait.
   constexpr double kMaxProgressEveryS = 60.0;
   app.add_option("--progress-every", progress_every_s,
                  "print \"progress: N scans recorded\" on stdout at most this often, when N changed (0: never)")
       ->check(CLI::Range(0.0, kMaxProgressEveryS));
-  app.add_option("--queue-depth", queue_depth, "reliable reader queue (match the services')")->capture_default_str();
+  app.add_option("--queue-depth", queue_depth, "reliable reader queue (match the services')")
+      ->check(CLI::Range(1, kMaxQueueDepth))
+      ->capture_default_str();
   app.add_option("--config", config,
                  "a YAML file with only a `service` section (config/scan_ingest.yaml documents it): its domain, "
                  "profile and discovery replace --domain and --profiles-file, e.g. to record on another host");
@@ -108,7 +115,13 @@ int main(int argc, char** argv) {
     }
     std::lock_guard lock(mutex);
     if (writer) writer->close();
-    std::cout << "recorded " << recorded << " scans -> " << output << "\n";
+    if (recorded == 0) {
+      // The log's header is the first scan's sensor: without a scan there is no log to write.
+      std::cout << "recorded 0 scans; nothing written to " << output << " (no scan arrived on " << rosTopic(ns, topic)
+                << ")\n";
+    } else {
+      std::cout << "recorded " << recorded << " scans -> " << output << "\n";
+    }
     return count > 0 && recorded < count ? 1 : 0;
   } catch (const std::exception& e) {
     std::cerr << "scan_recorder: error: " << e.what() << "\n";

@@ -274,6 +274,18 @@ TEST(FilterConfig, CountsOfReturnsFollowTheAngularStep) {
   EXPECT_EQ(fixed.surface_memory.sparse_surfaces.min_cells, 6);
 }
 
+// yaml-cpp answers the first of two equal keys: a line appended to override
+// a setting would be ignored without a word.
+TEST(FilterConfigErrors, AKeyGivenTwiceIsAnErrorNamingBothLines) {
+  EXPECT_EQ(errorOf("jump_filter:\n  alpha: 0.6\n  alpha: 50\n"),
+            "f.yaml:3: jump_filter.alpha: duplicate key (first on line 2); give each key once");
+  EXPECT_EQ(errorOf("penetration_filter:\n  surface_memory:\n    lifetime: 5\npenetration_filter:\n  t_max: 4\n"),
+            "f.yaml:4: penetration_filter: duplicate key (first on line 1); give each key once");
+  EXPECT_EQ(errorOf("jump_filter:\n  alpha: 0.6\npenetration_filter:\n  alpha: 0.6\n").find("duplicate"),
+            std::string::npos)
+      << "the same key in two mappings is two keys";
+}
+
 TEST(FilterConfigErrors, NameFileLineAndKey) {
   EXPECT_EQ(errorOf("jump_filter:\n  alpha: fast\n"), "f.yaml:2: jump_filter.alpha: expected a number, got \"fast\"");
   EXPECT_EQ(errorOf("jump_filter:\n  alpah: 1\n"), "f.yaml:2: jump_filter.alpah: unknown key (did you mean alpha?)");

@@ -124,6 +124,15 @@ TEST(SimulatorErrors, BadSceneNamesFileLineAndKey) {
   EXPECT_THROW(sim::findScene("no-such-scene"), InputError);
 }
 
+TEST(SimulatorErrors, AKeyGivenTwiceInAListedItemNamesTheItem) {
+  try {
+    sim::parseScene("walls:\n  - {points: [[0, 0], [1, 0]], material: glass, material: rough}\n", "s.yaml");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "s.yaml:2: walls[0].material: duplicate key (first on line 2); give each key once");
+  }
+}
+
 // A robot cannot drive through a wall or a leg: scans from there are no
 // robot's (the home tour did, docs/simulator.md).
 TEST(SimulatorErrors, ATourThroughAWallNamesTheWaypoint) {

@@ -7,9 +7,19 @@
 #include <spdlog/spdlog.h>
 
 #include "commands.hpp"
+#include "scanfilter/cli/option_checks.hpp"
 #include "scanfilter/input_error.hpp"
 
 using namespace scanfilter::cli;
+
+namespace {
+// Every command that reads a CARMEN log takes its "no return" reading.
+void addCarmenRangeMax(CLI::App* command, double& range_max) {
+  command->add_option("--carmen-range-max", range_max, "CARMEN logs: ranges at or above this are no return (m)")
+      ->check(numberAtLeast(0.0, "m", true))
+      ->capture_default_str();
+}
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"scanfilter: two-step filter for indoor 2D LiDAR scans (jump points, misdetected points)"};
@@ -42,7 +52,7 @@ int main(int argc, char** argv) {
   rep->add_option("--config", replay.config, "filter config YAML (default: built-in defaults, see config/filter.yaml)")->check(CLI::ExistingFile);
   rep->add_flag("--reference", replay.reference, "use the literal reference implementations (slow)");
   rep->add_option("--render", replay.render, "also write a before/after PNG of the whole log");
-  rep->add_option("--carmen-range-max", replay.carmen_range_max, "CARMEN logs: ranges at or above this are no return (m)")->capture_default_str();
+  addCarmenRangeMax(rep, replay.carmen_range_max);
   rep->add_flag("-q,--quiet", replay.quiet, "print nothing but errors");
 
   RenderOptionsCli render;
@@ -59,7 +69,7 @@ int main(int argc, char** argv) {
   inf->add_option("input", info.input, "scan log, CARMEN log or Mines URG-04LX log")
       ->required()
       ->check(CLI::ExistingFile);
-  inf->add_option("--carmen-range-max", info.carmen_range_max, "CARMEN logs: ranges at or above this are no return (m)")->capture_default_str();
+  addCarmenRangeMax(inf, info.carmen_range_max);
 
   DiffOptions diff;
   auto* dif = app.add_subcommand("diff", "Compare the labels of two scan logs scan by scan (exit 1 if they differ)");
@@ -75,7 +85,7 @@ int main(int argc, char** argv) {
   mp->add_option("--config", map.config, "filter config YAML")->check(CLI::ExistingFile);
   mp->add_option("--resolution", map.resolution, "cell size (m)")->capture_default_str()->check(CLI::Range(0.005, 10.0));
   mp->add_flag("--unfiltered", map.unfiltered, "map every return, without the filter (for comparison)");
-  mp->add_option("--carmen-range-max", map.carmen_range_max, "CARMEN logs: ranges at or above this are no return (m)")->capture_default_str();
+  addCarmenRangeMax(mp, map.carmen_range_max);
 
   BenchAccuracyOptions bench;
   auto* ben = app.add_subcommand("bench-accuracy",
@@ -103,7 +113,7 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   rr->add_option("-o,--output-dir", real.output_dir, "write real-recordings.md, real-consistency.md and the pictures here");
   rr->add_option("--image-prefix", real.image_prefix, "path prefix of the pictures in real-recordings.md (e.g. images/)");
-  rr->add_option("--carmen-range-max", real.carmen_range_max, "CARMEN logs: ranges at or above this are no return (m)")->capture_default_str();
+  addCarmenRangeMax(rr, real.carmen_range_max);
 
   CLI11_PARSE(app, argc, argv);
   spdlog::set_level(spdlog::level::from_str(log_level));

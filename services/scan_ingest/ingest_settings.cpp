@@ -1,8 +1,17 @@
 #include "ingest_settings.hpp"
 
+#include "scanfilter/input_error.hpp"
+#include "scanfilter/sim/scene.hpp"
 #include "scanfilter/yaml_section.hpp"
 
 namespace scanfilter::ingest {
+
+namespace {
+// m: what a CARMEN log's "no return" reading may be taken from; any laser's
+// limit lies between.
+constexpr double kMinCarmenRangeMax = 0.01;
+constexpr double kMaxCarmenRangeMax = 1e4;
+}  // namespace
 
 IngestSettings readIngestSettings(const dds_io::ServiceConfigFile& config) {
   IngestSettings s;
@@ -18,6 +27,16 @@ IngestSettings readIngestSettings(const dds_io::ServiceConfigFile& config) {
     source.fail("rate", "expected recorded, max or a speed factor > 0, got \"" + rate + "\"");
   if (s.kind == "log" && s.path.empty()) source.fail("path", "a log source needs a path");
   s.path = config.resolvePath(s.path);
+  if (s.kind == "log") source.requireFile("path", s.path);
+  if (s.kind == "simulator") {
+    try {
+      sim::findScene(s.scene);
+    } catch (const InputError& e) {
+      source.fail("scene", e.what());
+    }
+  }
+  source.requireRange("carmen_range_max", s.carmen_range_max, kMinCarmenRangeMax, kMaxCarmenRangeMax,
+                      "0.01-10000 (m; CARMEN logs write 80 for no return)");
   source.rejectUnknownKeys();
   YamlSection live(config.root, "live", config.path);
   live.read("scan_topic", s.live.scan_topic);
@@ -41,6 +60,7 @@ IngestSettings readIngestSettings(const dds_io::ServiceConfigFile& config) {
   playback.read("wait_notice_s", s.wait_notice_s);
   if (!s.progress_path.empty()) s.progress_path = config.resolvePath(s.progress_path);
   playback.requireRange("wait_for_subscribers", s.wait_for_subscribers, 0, 1000, "an integer 0-1000");
+  playback.requireRange("wait_timeout_s", s.wait_timeout_s, 0, 86400, "0-86400 (s)");
   playback.requireRange("wait_notice_s", s.wait_notice_s, 0, 86400, "0-86400 (s; 0: never)");
   playback.rejectUnknownKeys();
   return s;

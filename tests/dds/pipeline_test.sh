@@ -308,6 +308,23 @@ config)
     grep -q "service.queue_depht: unknown key (did you mean queue_depth?)" <<<"$out" ||
       fail "$svc did not name the bad key and the one meant: $out"
   done
+  # A path or value that cannot work is reported at the line that gave it,
+  # before any participant starts: "svc.yaml:LINE: KEY: ...".
+  refused() {  # svc sed-expression expected-text
+    sed "s#profiles_file: ../deploy#profiles_file: $SRC/deploy#; s#config: filter.yaml#config: $SRC/config/filter.yaml#; $2" \
+      "$SRC/config/$1.yaml" > "$WORK/$1.yaml"
+    set +e
+    out=$("$BUILD/services/$1" --config "$WORK/$1.yaml" 2>&1)
+    code=$?
+    set -e
+    [ "$code" -ne 0 ] || fail "$1 accepted $2"
+    [[ "$out" == *"$WORK/$1.yaml:"*": $3"* ]] || fail "$1 with $2 did not say \"$3\" at its line: $out"
+  }
+  refused scan_ingest 's#^  kind: simulator#  kind: log#; s#^  path: ""#  path: /nonexistent.jsonl#' \
+    "source.path: no such file: /nonexistent.jsonl"
+  refused scan_ingest 's#^  scene: hall#  scene: kitchen#' "source.scene: kitchen: no such scene"
+  refused scan_ingest 's#^  wait_timeout_s: 30.0#  wait_timeout_s: -1#' "playback.wait_timeout_s: expected 0-86400 (s), got -1"
+  refused jump_filter "s#config: $SRC/config/filter.yaml#config: filtr.yaml#" "filter.config: no such file: $WORK/filtr.yaml"
   ;;
 launcher)
   # deploy/run-pipeline.sh (what scripts/demo.sh runs) starts the ingest as

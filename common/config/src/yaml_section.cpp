@@ -5,6 +5,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <vector>
 
@@ -37,6 +38,32 @@ std::size_t editDistance(const std::string& a, const std::string& b) {
     }
   }
   return d[a.size()][b.size()];
+}
+
+std::string childPath(const std::string& path, const std::string& child) {
+  return path.empty() ? child : path + "." + child;
+}
+
+// YAML allows a key once in a mapping. yaml-cpp keeps both entries and
+// answers the first, so a line appended to override a setting would be
+// ignored without a word.
+void rejectDuplicateKeys(const YAML::Node& node, const std::string& file, const std::string& path) {
+  if (node.IsSequence()) {
+    for (std::size_t i = 0; i < node.size(); ++i)
+      rejectDuplicateKeys(node[i], file, path + "[" + std::to_string(i) + "]");
+    return;
+  }
+  if (!node.IsMap()) return;
+  std::map<std::string, std::size_t> first_line;
+  for (const auto& entry : node) {
+    if (!entry.first.IsScalar()) continue;  // keyText reports it where the key is read
+    const std::string& key = entry.first.Scalar();
+    const auto [seen, fresh] = first_line.emplace(key, lineOf(entry.first));
+    if (!fresh)
+      throw InputError(file, lineOf(entry.first), childPath(path, key),
+                       "duplicate key (first on line " + std::to_string(seen->second) + "); give each key once");
+    rejectDuplicateKeys(entry.second, file, childPath(path, key));
+  }
 }
 }  // namespace
 
@@ -121,6 +148,14 @@ void YamlSection::failOutOfRange(const char* key, double value, const char* expe
   fail(key, std::string("expected ") + expected + ", got " + text.str());
 }
 
+void YamlSection::requireFile(const char* key, const std::string& path) const {
+  // The error_code forms: a name too long for the file system is "no such
+  // file" too, not a filesystem_error (found by penetration_filter_config_fuzz).
+  std::error_code error;
+  if (!std::filesystem::exists(path, error)) fail(key, "no such file: " + path);
+  if (std::filesystem::is_directory(path, error)) fail(key, "is a directory, expected a file: " + path);
+}
+
 void YamlSection::fail(const char* key, const std::string& problem) const {
   const YAML::Node at = node_ ? node_[key] : YAML::Node(YAML::NodeType::Undefined);
   throw InputError(file_, at ? lineOf(at) : lineOf(node_), path_ + "." + key, problem);
@@ -132,11 +167,14 @@ std::string keyText(const YAML::Node& key, const std::string& file) {
 }
 
 YAML::Node parseYaml(const std::string& text, const std::string& file) {
+  YAML::Node root;
   try {
-    return YAML::Load(text);
+    root = YAML::Load(text);
   } catch (const YAML::ParserException& e) {
     throw InputError(file, static_cast<std::size_t>(e.mark.line) + 1, "", "malformed YAML: " + e.msg);
   }
+  rejectDuplicateKeys(root, file, "");
+  return root;
 }
 
 std::string readConfigText(const std::string& path) {

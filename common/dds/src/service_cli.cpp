@@ -47,7 +47,7 @@ std::optional<int> ServiceCli::parse(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--log-level", log_level, "overrides service.log_level: trace, debug, info, warn, error, off")
       ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}));
-  app.add_option("--domain", domain, "overrides service.domain_id")->check(CLI::Range(0, 232));
+  app.add_option("--domain", domain, "overrides service.domain_id")->check(CLI::Range(0, kMaxDomainId));
   app.add_option("--namespace", ns, "overrides service.namespace (topics rt/<ns>/...)");
   app.add_option("--metrics-address", metrics, "overrides service.metrics_address (host:port)");
   try {

@@ -2,15 +2,13 @@
 
 #include <filesystem>
 
+#include "scanfilter/dds/dds_participant.hpp"
 #include "scanfilter/dds/metrics_address.hpp"
+#include "scanfilter/dds/stream_qos.hpp"
 #include "scanfilter/input_error.hpp"
 #include "scanfilter/yaml_section.hpp"
 
 namespace scanfilter::dds_io {
-
-namespace {
-constexpr int kMaxDomainId = 232;  // DDS RTPS port mapping allows domains 0-232
-}
 
 std::string ServiceConfigFile::resolvePath(const std::string& p) const {
   if (p.empty() || std::filesystem::path(p).is_absolute()) return p;
@@ -46,16 +44,12 @@ ServiceConfigFile loadServiceConfig(const std::string& path, const std::string& 
   section.read("required_readers", s.stream.required_readers);
   section.requireRange("required_readers", s.stream.required_readers, 0, 1000, "an integer 0-1000");
   section.requireRange("domain_id", s.participant.domain_id, 0, kMaxDomainId, "a DDS domain id 0-232");
-  section.requireRange("queue_depth", s.stream.queue_depth, 1, 100000, "an integer 1-100000");
+  section.requireRange("queue_depth", s.stream.queue_depth, 1, kMaxQueueDepth, "an integer 1-100000");
   section.requireRange("max_blocking_s", s.stream.max_blocking_s, 0.001, 3600, "0.001-3600 (s)");
   if (s.topic_namespace.find_first_of(" \t#") != std::string::npos || (!s.topic_namespace.empty() && (s.topic_namespace.front() == '/' || s.topic_namespace.back() == '/')))
     section.fail("namespace", "expected a ROS name without spaces or leading/trailing '/', got \"" + s.topic_namespace + "\"");
   if (const auto problem = metricsAddressProblem(s.metrics_address)) section.fail("metrics_address", *problem);
-  // The error_code form: a name too long for the file system is "no such
-  // file" too, not a filesystem_error (found by penetration_filter_config_fuzz).
-  std::error_code error;
-  if (!std::filesystem::exists(s.participant.profiles_file, error))
-    section.fail("profiles_file", "no such file: " + s.participant.profiles_file);
+  section.requireFile("profiles_file", s.participant.profiles_file);
   s.participant.security = readSecuritySettings(section, file.directory);
   section.rejectUnknownKeys();
   return file;
@@ -66,7 +60,9 @@ FilterConfig loadStageFilterConfig(const ServiceConfigFile& config) {
   std::string filter_file = "filter.yaml";
   section.read("config", filter_file);
   section.rejectUnknownKeys();
-  return loadFilterConfig(config.resolvePath(filter_file));
+  const std::string path = config.resolvePath(filter_file);
+  section.requireFile("config", path);
+  return loadFilterConfig(path);
 }
 
 }  // namespace scanfilter::dds_io

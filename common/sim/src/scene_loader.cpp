@@ -100,12 +100,7 @@ void checkTourFits(const SceneParser& p, const YAML::Node& trajectory, const Sce
 }  // namespace
 
 Scene parseScene(const std::string& yaml_text, const std::string& name) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml_text);
-  } catch (const YAML::ParserException& e) {
-    throw InputError(name, static_cast<std::size_t>(e.mark.line) + 1, "", "malformed YAML: " + e.msg);
-  }
+  const YAML::Node root = parseYaml(yaml_text, name);
   const SceneParser p(name);
   if (!root.IsMap()) p.fail(root, "", "expected a mapping at the top level");
   p.checkKeys(root, "scene",

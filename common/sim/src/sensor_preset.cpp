@@ -15,12 +15,7 @@ namespace {
 constexpr double kDegreesPerTurn = 360.0;
 
 void parsePreset(const std::string& yaml_text, const std::string& file, Scene& scene) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml_text);
-  } catch (const YAML::ParserException& e) {
-    throw InputError(file, static_cast<std::size_t>(e.mark.line) + 1, "", "malformed YAML: " + e.msg);
-  }
+  const YAML::Node root = parseYaml(yaml_text, file);
   const SceneParser p(file);
   if (!root.IsMap()) p.fail(root, "", "expected a mapping at the top level");
   p.checkKeys(root, "sensor preset", {"name", "description", "sensor", "lidar"});

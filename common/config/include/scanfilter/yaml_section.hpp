@@ -49,6 +49,10 @@ class YamlSection {
     if (!(value >= lo && value <= hi)) failOutOfRange(key, value, expected);
   }
 
+  // Fails unless `path` (the key's value, resolved) names an existing file,
+  // so that a wrong path is reported at the line that gave it.
+  void requireFile(const char* key, const std::string& path) const;
+
   // A key that no read asked for is an error; a known key within a few
   // letters of it is named (a misspelling), else the known keys are listed.
   void rejectUnknownKeys() const;
@@ -77,7 +81,8 @@ class YamlSection {
 // naming the file and line (yaml-cpp would throw its own exception).
 std::string keyText(const YAML::Node& key, const std::string& file);
 
-// Parses YAML text, reporting syntax errors with file and line.
+// Parses YAML text, reporting syntax errors and a key given twice in one
+// mapping with file and line.
 YAML::Node parseYaml(const std::string& text, const std::string& file);
 // Largest config file read (scenes with many walls are ~10 kB): a bigger one
 // is not a config, and reading it whole (a 2 GB line) would take the memory.

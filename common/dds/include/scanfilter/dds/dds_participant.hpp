@@ -12,10 +12,13 @@
 
 namespace scanfilter::dds_io {
 
+// The RTPS port mapping (PB 7400 + DG 250 × domain) leaves room for domains 0-232.
+inline constexpr int kMaxDomainId = 232;
+
 // Where a service's participant lives and how it talks: the domain and a
 // Fast DDS XML profile (deploy/fastdds-loopback.xml by default: localhost only).
 struct ParticipantSettings {
-  int domain_id = 0;
+  int domain_id = 0;  // 0 to kMaxDomainId
   std::string profiles_file;
   std::string profile = "scanfilter_loopback";
   std::string name = "scanfilter";

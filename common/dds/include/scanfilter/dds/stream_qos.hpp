@@ -10,6 +10,10 @@ eprosima::fastrtps::Duration_t toDuration(double seconds);
 // QoS of the scan streams between the pipeline's stages: reliable and
 // keep-all with a bounded queue, so a fast producer is slowed down by the
 // slowest consumer (write() blocks) instead of losing scans.
+// A deeper queue is a configuration mistake (each sample of a 3,600-beam scan
+// is ~30 kB per slot), not a need.
+inline constexpr int kMaxQueueDepth = 100000;
+
 struct StreamQos {
   int queue_depth = 64;           // samples buffered per writer and reader
   double max_blocking_s = 5.0;    // how long write() waits for room before failing
