@@ -81,6 +81,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     ShutdownSignal::install();
+    checkLogToEnd(input);  // a log cut short fails before any of it is published
     auto source = openScanSource(input);
     const SensorInfo& sensor = source->header().sensor;
     DdsParticipant participant(settings);

@@ -7,6 +7,7 @@
 #include "scanfilter/input_error.hpp"
 #include "scanfilter/scan_log_reader.hpp"
 #include "scanfilter/scan_log_writer.hpp"
+#include "scanfilter/scan_source.hpp"
 #include "temp_file.hpp"
 
 namespace scanfilter {
@@ -121,8 +122,13 @@ TEST(ScanLog, OutOfRangeValuesAreNoReturn) {
   EXPECT_DOUBLE_EQ(r[3], 3.0);
 }
 
-TEST(ScanLogErrors, MalformedJson) {
-  EXPECT_EQ(errorOf(R"({"stamp": 1.0, "pose": [0,0,)").substr(0, 23), ":2: malformed JSON: [js");
+TEST(ScanLogErrors, MalformedJsonNamesTheColumnAndALineCutShort) {
+  EXPECT_EQ(errorOf(R"({"stamp": 1.0, "pose": [0,0,)"),
+            ":2: malformed JSON at column 29: syntax error while parsing value - unexpected end of input; expected "
+            "'[', '{', or a literal (the line ends inside its object: a file cut short?)");
+  EXPECT_EQ(errorOf(R"({"stamp": 1.0, "pose": [0,0,0] x})"),
+            ":2: malformed JSON at column 32: syntax error while parsing object - invalid literal; last read: "
+            "'0] x'; expected '}'");
 }
 
 TEST(ScanLogErrors, BareNaNIsNotJson) {
@@ -214,6 +220,26 @@ TEST(ScanLog, StampsEqualToTheScanBeforeAreCountedAndKept) {
   EXPECT_EQ(scans, 5u);
   EXPECT_EQ(reader.stampRepeats(), 3u);
   EXPECT_EQ(reader.stampRegressions(), 0u);
+}
+
+// A player reads a log through once before publishing any of it.
+TEST(ScanLog, CheckedToItsEndBeforeItIsPlayed) {
+  const std::string a = R"({"stamp": 2.0, "pose": [0,0,0], "angle_min": 0, "angle_increment": 0.1, "ranges": [1]})";
+  const std::string b = R"({"stamp": 1.0, "pose": [0,0,0], "angle_min": 0, "angle_increment": 0.1, "ranges": [1]})";
+  TempFile good("good.scanlog.jsonl", kHeader + "\n" + a + "\n" + a + "\n" + b + "\n");
+  const auto check = checkLogToEnd(good.path());
+  ASSERT_TRUE(check.has_value());
+  EXPECT_EQ(check->scans, 3u);
+  EXPECT_EQ(check->stamp_repeats, 1u);
+  EXPECT_EQ(check->stamp_regressions, 1u);
+
+  TempFile cut("cut.scanlog.jsonl", kHeader + "\n" + a + "\n" + a + "\n" + a.substr(0, 30));
+  try {
+    checkLogToEnd(cut.path());
+    FAIL() << "a log cut short passed its check";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 4u);
+  }
 }
 
 // Stamps a double cannot hold (about 240 ns apart at 1.7e9 s) are read as

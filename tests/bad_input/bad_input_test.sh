@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # Bad input for one program: each of seven bad files in place of the file it
-# reads. Every case must exit 1-125 (not 0, not a crash), print exactly one
+# reads (eight for the programs that read logs). Every case must exit 1-125 (not 0, not a crash), print exactly one
 # line (stdout and stderr together) that names the file, and leave no output
 # file behind (nor a .partial/.tmp one). Cases: missing, directory, empty,
 # truncated_gzip, binary, long_line (a 2 GB line, streamed through a FIFO so
-# it needs neither the disk nor the memory) and wrong_type (a value of the
-# wrong type; the line must be named).
+# it needs neither the disk nor the memory), wrong_type (a value of the
+# wrong type; the line must be named) and, for logs, cut_short (a plain log
+# cut in its last scan; the line must be named, and the players refuse it
+# before publishing anything).
 #
 #   bad_input_test.sh BUILD_DIR SOURCE_DIR PROGRAM
 #   PROGRAM: info | replay | replay_config | map | map_config | render | diff | report_real | simulate_scene |
@@ -55,6 +57,11 @@ make_bad_files() {  # kind: log | yaml (what the wrong-type file is)
   if [ "$1" = log ]; then
     sed '1s/"range_min":0.05/"range_min":"near"/' "$GOOD_LOG" >"$BAD/wrong_type"
     WRONG_LINE=1
+    # A plain log cut short in its last scan, 400 good scans before it: a
+    # player must refuse it before publishing any of them.
+    { head -n 1 "$GOOD_LOG"
+      for i in $(seq 400); do sed -n "2s/\"stamp\":1.0/\"stamp\":$i/p" "$GOOD_LOG"; done
+      sed -n '2p' "$GOOD_LOG" | head -c 60; } >"$BAD/cut_short.scanlog.jsonl"
   fi
 }
 
@@ -103,7 +110,7 @@ check_case() {  # case file [need_line]: runs RUN with FILE set, checks the outc
   fi
 }
 
-run_all() {  # wrong_type_file: every case; the wrong-type case must name its line
+run_all() {  # wrong_type_file [cut_short_file]: every case; those two must name their line
   check_case missing "$BAD/missing"
   check_case directory "$BAD/directory"
   check_case empty "$BAD/empty"
@@ -111,6 +118,7 @@ run_all() {  # wrong_type_file: every case; the wrong-type case must name its li
   check_case binary "$BAD/binary"
   check_case long_line "$BAD/long_line" line
   check_case wrong_type "$1" line
+  if [ -n "${2:-}" ]; then check_case cut_short "$2" line; fi
 }
 
 # A service config whose `service:` section is fine and one key has the wrong type.
@@ -137,7 +145,7 @@ case "$PROGRAM" in
       ros_scan_publisher)
         RUN="'$BUILD/dds_tools/ros_scan_publisher' \"\$FILE\" --profiles-file '$WORK/fastdds-loopback.xml' --domain 7" ;;
     esac
-    run_all "$BAD/wrong_type"
+    run_all "$BAD/wrong_type" "$BAD/cut_short.scanlog.jsonl"
     ;;
   replay_config | map_config | bench_accuracy_config)
     make_bad_files yaml
@@ -174,7 +182,7 @@ case "$PROGRAM" in
     make_bad_files log
     service_config scan_ingest >"$WORK/scan_ingest.yaml"
     RUN="sed -e 's#^\(  kind:\) *simulator#\1 log#' -e \"s#^\(  path:\) *\\\"\\\"#\1 \$FILE#\" '$WORK/scan_ingest.yaml' >'$WORK/ingest-log.yaml' && grep -q 'kind: log' '$WORK/ingest-log.yaml' && exec '$BUILD/services/scan_ingest' --config '$WORK/ingest-log.yaml'"
-    run_all "$BAD/wrong_type"
+    run_all "$BAD/wrong_type" "$BAD/cut_short.scanlog.jsonl"
     ;;
   *)
     echo "unknown program $PROGRAM" >&2
@@ -186,4 +194,4 @@ if [ "$failures" -gt 0 ]; then
   echo "FAIL: $failures case(s) of $PROGRAM"
   exit 1
 fi
-echo "PASS: $PROGRAM, 7 bad inputs"
+echo "PASS: $PROGRAM, every bad input"

@@ -40,7 +40,7 @@ bool isScanLine(const std::string& line) {
 }  // namespace
 
 CarmenLogReader::CarmenLogReader(const std::string& path, const ScanSourceOptions& options)
-    : lines_(path), stamp_order_(path, "ipc_timestamp") {
+    : lines_(path), stamp_order_(path, "ipc_timestamp", options.warn_stamps) {
   header_.source = "CARMEN log " + path;
   header_.sensor.direction = BeamDirection::kCcw;
   header_.sensor.range_max = options.carmen_range_max;

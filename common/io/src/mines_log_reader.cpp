@@ -37,7 +37,8 @@ bool MinesLogReader::looksLikeMinesLine(const std::string& line) {
   return tokens.size() == kFieldCount && isInteger(tokens[kTimeField]);
 }
 
-MinesLogReader::MinesLogReader(const std::string& path, const MinesRobotModel& model) : lines_(path), stamp_order_(path, "timestamp_us"), model_(model) {
+MinesLogReader::MinesLogReader(const std::string& path, const MinesRobotModel& model, bool warn_stamps)
+    : lines_(path), stamp_order_(path, "timestamp_us", warn_stamps), model_(model) {
   header_.source = kSourcePrefix + path;
   header_.sensor.direction = BeamDirection::kCcw;
   header_.sensor.mount.x = model.laser_offset;

@@ -58,13 +58,26 @@ class FieldChecker {
   std::size_t line_;
 };
 
+// nlohmann says "[json.exception.parse_error.101] parse error at line 1,
+// column 1067: syntax error ...": its line is the text given, one line of
+// the file. Said as the column, and a line that ends inside its object as
+// what it most often is.
+std::string parseProblem(const nlohmann::json::parse_error& e, const std::string& text) {
+  const std::string what = e.what();
+  const auto detail = what.find(": ");
+  std::string problem = "malformed JSON at column " + std::to_string(e.byte) + ": " +
+                        (detail == std::string::npos ? what : what.substr(detail + 2));
+  if (e.byte > text.size()) problem += " (the line ends inside its object: a file cut short?)";
+  return problem;
+}
+
 Json parseLine(const std::string& text, const std::string& file, std::size_t line) {
   try {
     Json object = Json::parse(text);
     if (!object.is_object()) throw InputError(file, line, "", "expected a JSON object");
     return object;
   } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(file, line, "", std::string("malformed JSON: ") + e.what());
+    throw InputError(file, line, "", parseProblem(e, text));
   } catch (const nlohmann::json::exception& e) {
     // out_of_range.406: a number beyond a double (1e400), found by scan_log_reader_fuzz.
     throw InputError(file, line, "", std::string("unreadable JSON: ") + e.what());
@@ -133,7 +146,10 @@ std::vector<std::uint8_t> parseCodes(const Json& array, const char* key, std::si
 
 }  // namespace
 
-ScanLogReader::ScanLogReader(const std::string& path) : lines_(path), stamp_order_(path, "stamp") { parseHeader(); }
+ScanLogReader::ScanLogReader(const std::string& path, bool warn_stamps)
+    : lines_(path), stamp_order_(path, "stamp", warn_stamps) {
+  parseHeader();
+}
 
 void ScanLogReader::parseHeader() {
   std::string text;

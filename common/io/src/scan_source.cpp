@@ -56,9 +56,23 @@ std::unique_ptr<ScanSource> openScanSource(const std::string& path, const ScanSo
   }
   if (!any_line) throw InputError(path, 0, "", "empty file: expected a scan log, a CARMEN log or a Mines log");
   const auto start = first.find_first_not_of(" \t");
-  if (start != std::string::npos && first[start] == '{') return std::make_unique<ScanLogReader>(path);
-  if (MinesLogReader::looksLikeMinesLine(first)) return std::make_unique<MinesLogReader>(path);
+  if (start != std::string::npos && first[start] == '{') return std::make_unique<ScanLogReader>(path, options.warn_stamps);
+  if (MinesLogReader::looksLikeMinesLine(first))
+    return std::make_unique<MinesLogReader>(path, MinesRobotModel{}, options.warn_stamps);
   return std::make_unique<CarmenLogReader>(path, options);
+}
+
+std::optional<LogCheck> checkLogToEnd(const std::string& path, ScanSourceOptions options) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) return std::nullopt;
+  options.warn_stamps = false;  // the pass that plays the log warns, at the scan it reaches
+  auto source = openScanSource(path, options);
+  LogCheck check;
+  ScanRecord record;
+  while (source->next(record)) ++check.scans;
+  check.stamp_regressions = source->stampRegressions();
+  check.stamp_repeats = source->stampRepeats();
+  return check;
 }
 
 }  // namespace scanfilter

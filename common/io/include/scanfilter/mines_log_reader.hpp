@@ -35,7 +35,7 @@ class MinesLogReader final : public ScanSource {
   // odometry, not corrected ones.
   static constexpr const char* kSourcePrefix = "Mines URG-04LX log (poses dead-reckoned from wheel ticks) ";
 
-  explicit MinesLogReader(const std::string& path, const MinesRobotModel& model = {});
+  explicit MinesLogReader(const std::string& path, const MinesRobotModel& model = {}, bool warn_stamps = true);
 
   const ScanLogHeader& header() const override { return header_; }
   bool next(ScanRecord& record) override;

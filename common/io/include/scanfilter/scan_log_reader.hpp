@@ -14,7 +14,7 @@ namespace scanfilter {
 // at a time, validating every field. Unknown keys are kept, never rejected.
 class ScanLogReader final : public ScanSource {
  public:
-  explicit ScanLogReader(const std::string& path);
+  explicit ScanLogReader(const std::string& path, bool warn_stamps = true);
 
   const ScanLogHeader& header() const override { return header_; }
   bool next(ScanRecord& record) override;

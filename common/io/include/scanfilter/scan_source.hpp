@@ -1,5 +1,6 @@
 #pragma once
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -34,10 +35,23 @@ class ScanSource {
 // Options for logs whose header does not say everything.
 struct ScanSourceOptions {
   double carmen_range_max = 80.0;  // m; CARMEN logs write >= 80 m for "no return"
+  bool warn_stamps = true;         // warn once about stamps that step back or stand still (else only count them)
 };
 
 // Opens a scan log or a CARMEN log (plain or gzip), told apart by content.
 std::unique_ptr<ScanSource> openScanSource(const std::string& path,
                                            const ScanSourceOptions& options = {});
+
+// What reading a log through to its end found.
+struct LogCheck {
+  std::size_t scans = 0;
+  std::size_t stamp_regressions = 0;
+  std::size_t stamp_repeats = 0;
+};
+
+// Reads a log through to its end, every line parsed, so that a file cut short
+// or a bad line anywhere fails (InputError, with its line) before a player
+// publishes any of it. nullopt for what cannot be read twice (a pipe).
+std::optional<LogCheck> checkLogToEnd(const std::string& path, ScanSourceOptions options = {});
 
 }  // namespace scanfilter

@@ -15,7 +15,10 @@ namespace scanfilter {
 class StampOrder {
  public:
   // `what` names the stamp field in the warning ("stamp", "ipc_timestamp").
-  StampOrder(std::string path, std::string what) : path_(std::move(path)), what_(std::move(what)) {}
+  // Unless `warn`, only counted: a pass that checks a log before it is
+  // played leaves the warnings to the pass that plays it.
+  StampOrder(std::string path, std::string what, bool warn = true)
+      : path_(std::move(path)), what_(std::move(what)), warn_(warn) {}
 
   void check(Stamp stamp, std::size_t line);
   // Scans whose stamp is earlier than the scan's before.
@@ -26,6 +29,7 @@ class StampOrder {
  private:
   std::string path_;
   std::string what_;
+  bool warn_;
   Stamp last_;
   bool have_last_ = false;
   std::size_t regressions_ = 0;
