@@ -26,7 +26,19 @@ while [ $# -gt 0 ]; do
     *) echo "unknown argument: $1 (see --help)" >&2; exit 2 ;;
   esac
 done
-[[ "$MATCH_TIMEOUT_S" =~ ^[0-9]+$ ]] || { echo "MATCH_TIMEOUT_S: whole seconds expected, got $MATCH_TIMEOUT_S" >&2; exit 2; }
+# The arguments are checked before anything starts: an error names the
+# argument the user typed, not the generated config it would land in.
+bad_argument() { echo "$1 (see --help)" >&2; exit 2; }
+[[ "$MATCH_TIMEOUT_S" =~ ^[0-9]+$ ]] || bad_argument "MATCH_TIMEOUT_S: whole seconds expected, got $MATCH_TIMEOUT_S"
+if [ -n "$LOG" ]; then
+  [ -f "$LOG" ] || bad_argument "--log: no such file: $LOG"
+elif [ ! -f "$SCENE" ] && [ ! -f "$ROOT/config/scenes/$SCENE.yaml" ]; then
+  bad_argument "--scene: neither a scene file nor a built-in scene ($(cd "$ROOT/config/scenes" && ls *.yaml | sed 's/\.yaml$//' | paste -sd ' ')), got $SCENE"
+fi
+positive_number() { awk -v x="$1" 'BEGIN { exit !(x ~ /^[0-9]*\.?[0-9]+$/ && x + 0 > 0) }'; }
+[[ "$RATE" =~ ^(recorded|max)$ ]] || positive_number "$RATE" ||
+  bad_argument "--rate: expected recorded, max or a speed factor > 0, got $RATE"
+[[ "$DOMAIN" =~ ^[0-9]+$ ]] && [ "$DOMAIN" -le 232 ] || bad_argument "--domain: expected a DDS domain id 0-232, got $DOMAIN"
 mkdir -p "$OUT"
 OUT="$(cd "$OUT" && pwd)"  # absolute: the configs written below are read from $OUT
 # The ingest's source, written as a config next to the output.
@@ -169,8 +181,16 @@ if [ "$status" = 0 ] && [ -n "$published" ]; then
 fi
 stop_all  # the recorder writes its last scans, puts its file in place and says how many
 recorded=$(recorder_says '^recorded \([0-9]*\) scans -> .*')
-echo "scan_ingest exited with $status; it published ${published:-?} scans, the recorder holds ${recorded:-?}"
-echo "labelled output: $OUT/pipeline.labeled.scanlog.jsonl; map: $OUT/map.png (+ .pgm/.yaml)"
+if [ "$status" = 0 ]; then
+  echo "scan_ingest published ${published:-an unknown number of} scans; the recorder holds ${recorded:-none}"
+else
+  # Its reason, here rather than only in its log: the last error it logged.
+  reason=$(sed -n 's/^.*\] \[error\] //p' "$OUT/scan_ingest.log" | tail -n 1)
+  echo "scan_ingest failed (exit $status): ${reason:-no error logged} (see $OUT/scan_ingest.log)"
+fi
+# Only what is there: a run that failed early wrote neither.
+[ -f "$OUT/pipeline.labeled.scanlog.jsonl" ] && echo "labelled output: $OUT/pipeline.labeled.scanlog.jsonl"
+[ -f "$OUT/map.png" ] && echo "map: $OUT/map.png (+ .pgm/.yaml)"
 # (Ended by the ingest's failure, its status stands; by Ctrl-C, the traps' 130.)
 if [ "$status" = 0 ]; then
   if [ -z "$published" ]; then

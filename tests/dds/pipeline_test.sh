@@ -356,8 +356,31 @@ launcher)
     fail "the labelled output is not $LAUNCH labelled scans: $info"
   "$SF" diff "$WORK/launch_offline.scanlog.jsonl" "$WORK/launch/pipeline.labeled.scanlog.jsonl" ||
     fail "the launcher's labels differ from the offline replay"
-  grep -q "^scan_ingest exited with 0; it published $LAUNCH scans, the recorder holds $LAUNCH$" <<<"$out" ||
+  grep -q "^scan_ingest published $LAUNCH scans; the recorder holds $LAUNCH$" <<<"$out" ||
     fail "run-pipeline.sh did not report $LAUNCH scans published and recorded"
+  grep -q "^labelled output: $WORK/launch/pipeline.labeled.scanlog.jsonl$" <<<"$out" ||
+    fail "run-pipeline.sh did not say where the labelled output is"
+  # Its arguments are checked before anything starts, naming the argument.
+  set +e
+  bad=$(BUILD_DIR="$BUILD" bash "$SRC/deploy/run-pipeline.sh" --rate fast --out "$WORK/bad_rate" --domain "$DOMAIN" 2>&1)
+  code=$?
+  set -e
+  [ "$code" = 2 ] && [[ "$bad" == "--rate: expected recorded, max or a speed factor > 0, got fast"* ]] ||
+    fail "run-pipeline.sh --rate fast: exit $code: $bad"
+  [ ! -e "$WORK/bad_rate" ] || fail "run-pipeline.sh --rate fast made its output directory"
+  # An ingest that fails: its reason in the launcher's own output, and no
+  # output named that was not written.
+  head -c 20000 "$WORK/launch_in.scanlog.jsonl" > "$WORK/cut.scanlog.jsonl"
+  set +e
+  out=$(BUILD_DIR="$BUILD" timeout -k 10 120 bash "$SRC/deploy/run-pipeline.sh" --log "$WORK/cut.scanlog.jsonl" \
+          --rate max --out "$WORK/cut" --domain "$DOMAIN" 2>&1)
+  code=$?
+  set -e
+  [ "$code" = 2 ] || fail "run-pipeline.sh on a log cut short exited with $code: $out"
+  [[ "$out" == *"scan_ingest failed (exit 2): $WORK/cut.scanlog.jsonl:"*"a file cut short?) (see $WORK/cut/scan_ingest.log)"* ]] ||
+    fail "run-pipeline.sh did not say why the ingest failed: $out"
+  [[ "$out" != *"labelled output:"* && "$out" != *"map: "* ]] || fail "run-pipeline.sh named outputs it did not write: $out"
+  [ ! -e "$WORK/cut/pipeline.labeled.scanlog.jsonl" ] || fail "a log cut short was published in part"
   # A log that pauses (the robot's logging stopped for a while), replayed at
   # its recorded pace: the pause is no end of the source, every scan is
   # recorded (the recorder once stopped 2 s after the last scan it got), and
@@ -383,7 +406,7 @@ launcher)
   code=$?
   set -e
   [ "$code" = 0 ] || fail "run-pipeline.sh on a log with a $PAUSE_S s pause exited with $code: $out"
-  grep -q "^scan_ingest exited with 0; it published $PAUSED scans, the recorder holds $PAUSED$" <<<"$out" ||
+  grep -q "^scan_ingest published $PAUSED scans; the recorder holds $PAUSED$" <<<"$out" ||
     fail "run-pipeline.sh on a log with a $PAUSE_S s pause: $out"
   info=$("$SF" info "$WORK/paused/pipeline.labeled.scanlog.jsonl")
   grep -q "^scans: *$PAUSED " <<<"$info" && grep -q "labels: $PAUSED scans" <<<"$info" ||
