@@ -15,6 +15,30 @@ include(GNUInstallDirs)
 
 set(SCANFILTER_INSTALLED_BIN_DIR ${CMAKE_BINARY_DIR}/installed-bin)
 
+# The build-tree programs installed under another name (TARGET:NAME).
+set(SCANFILTER_INSTALLED_TWINS)
+if(SCANFILTER_BUILD_SERVICES)
+  set(SCANFILTER_INSTALLED_TWINS
+    scan_ingest:scanfilter-scan-ingest jump_filter:scanfilter-jump-filter
+    penetration_filter:scanfilter-penetration-filter map_publisher:scanfilter-map-publisher
+    scan_recorder:scanfilter-scan-recorder ros_scan_publisher:scanfilter-ros-scan-publisher)
+endif()
+
+# Before anything is copied: every program is built. scripts/demo.sh builds
+# only what it runs, and CMake's own "file INSTALL cannot find" names a
+# file in the build tree, not what to run.
+set(installed_programs $<TARGET_FILE:scanfilter>)
+foreach(twin ${SCANFILTER_INSTALLED_TWINS})
+  string(REGEX REPLACE "^.*:" "" name ${twin})
+  list(APPEND installed_programs ${SCANFILTER_INSTALLED_BIN_DIR}/${name})
+endforeach()
+install(CODE "
+  foreach(program ${installed_programs})
+    if(NOT EXISTS \"\${program}\")
+      message(FATAL_ERROR \"\${program} is not built: run `bash scripts/build.sh` (every program) before installing\")
+    endif()
+  endforeach()")
+
 # TARGET (a build-tree executable) installed as NAME.
 function(scanfilter_installed_twin target name)
   get_target_property(libs ${target} LINK_LIBRARIES)
@@ -29,12 +53,10 @@ endfunction()
 # packages' programs on a system.
 install(TARGETS scanfilter RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 if(SCANFILTER_BUILD_SERVICES)
-  scanfilter_installed_twin(scan_ingest scanfilter-scan-ingest)
-  scanfilter_installed_twin(jump_filter scanfilter-jump-filter)
-  scanfilter_installed_twin(penetration_filter scanfilter-penetration-filter)
-  scanfilter_installed_twin(map_publisher scanfilter-map-publisher)
-  scanfilter_installed_twin(scan_recorder scanfilter-scan-recorder)
-  scanfilter_installed_twin(ros_scan_publisher scanfilter-ros-scan-publisher)
+  foreach(twin ${SCANFILTER_INSTALLED_TWINS})
+    string(REPLACE ":" ";" target_and_name ${twin})
+    scanfilter_installed_twin(${target_and_name})
+  endforeach()
 
   # The configs, the Fast DDS profiles and the systemd units, rewritten for
   # the prefix given at install time (cmake/install_layout.cmake).

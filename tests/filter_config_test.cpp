@@ -290,7 +290,14 @@ TEST(FilterConfigErrors, NameFileLineAndKey) {
   EXPECT_EQ(errorOf("jump_filter:\n  alpha: fast\n"), "f.yaml:2: jump_filter.alpha: expected a number, got \"fast\"");
   EXPECT_EQ(errorOf("jump_filter:\n  alpah: 1\n"), "f.yaml:2: jump_filter.alpah: unknown key (did you mean alpha?)");
   EXPECT_EQ(errorOf("jump_filter:\n  d_max: .inf\n"),
-            "f.yaml:2: jump_filter.d_max: expected 0 <= value <= 1e4 (m), or auto, got .inf");
+            "f.yaml:2: jump_filter.d_max: expected 0 <= value <= 1e4 (m), or auto, got .inf (not a finite number)");
+  EXPECT_EQ(errorOf("jump_filter:\n  alpha: .inf\n"),
+            "f.yaml:2: jump_filter.alpha: expected a value > 0, got .inf (not a finite number)");
+  EXPECT_EQ(errorOf("jump_filter:\n  alpha: [1, 2]\n"),
+            "f.yaml:2: jump_filter.alpha: expected a number, got \"a list or mapping\"");
+  EXPECT_EQ(errorOf("penetration_filter:\n  max_cache_frames: 99999999999999999999\n"),
+            "f.yaml:2: penetration_filter.max_cache_frames: expected an integer from 0 to 18446744073709551615, got "
+            "\"99999999999999999999\"");
   EXPECT_EQ(errorOf("jump_filter:\n  d_min: -1\n"),
             "f.yaml:2: jump_filter.d_min: expected 0 <= value <= 1e4 (m), or auto, got -1");
   EXPECT_EQ(errorOf("jump_filter:\n  theta_k_deg: 90\n"),

@@ -1,13 +1,25 @@
 #include "score_report.hpp"
 
 #include <iomanip>
+#include <sstream>
+#include <string>
 
 namespace scanfilter::cli {
 
 namespace {
+// A share of nothing is no score: "n/a", not the 1.0 the ratios take for 0/0.
+std::string shareOrNa(double share, std::size_t of) {
+  if (of == 0) return "n/a";
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(4) << share;
+  return text.str();
+}
+
 void printClass(std::ostream& out, const char* name, const RemovalClassScore& s) {
+  const std::size_t f1_of = s.truth == 0 || s.labelled == 0 ? 0 : 1;
   out << "  " << std::left << std::setw(13) << name << std::right << std::setw(9) << s.truth << std::setw(10)
-      << s.precision() << std::setw(10) << s.recall() << std::setw(10) << s.f1() << "\n";
+      << shareOrNa(s.precision(), s.labelled) << std::setw(10) << shareOrNa(s.recall(), s.truth) << std::setw(10)
+      << shareOrNa(s.f1(), f1_of) << "\n";
 }
 
 constexpr int kCauseColumn = 31;  // characters: "displaced at grazing incidence" and a space

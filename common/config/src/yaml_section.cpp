@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -145,6 +146,8 @@ void YamlSection::failOutOfRange(const char* key, double value, const char* expe
   } else {
     text << value;
   }
+  // `.inf` is "a value > 0" by arithmetic; what it is not is a number a setting can take.
+  if (!std::isfinite(value)) text << " (not a finite number)";
   fail(key, std::string("expected ") + expected + ", got " + text.str());
 }
 

@@ -181,7 +181,8 @@ void ScanLogReader::parseHeader() {
   SensorInfo& s = header_.sensor;
   s.range_min = check.finiteNumber(check.require(sensor, "range_min"), "sensor.range_min");
   s.range_max = check.finiteNumber(check.require(sensor, "range_max"), "sensor.range_max");
-  if (s.range_min < 0.0) check.fail("sensor.range_min", "is negative; expected >= 0");
+  if (s.range_min < 0.0)
+    check.fail("sensor.range_min", "is negative (" + FieldChecker::describe(sensor["range_min"]) + "); expected >= 0");
   if (s.range_max > kImplausibleRange)
     check.fail("sensor.range_max", "is beyond any indoor sensor; expected <= " +
                                        std::to_string(static_cast<int>(kImplausibleRange)) + " m");
@@ -192,7 +193,8 @@ void ScanLogReader::parseHeader() {
   // The filter config's bounds on Δθ (config/filter.yaml): the obstacle
   // threshold is scaled by it, and 1e-300 would overflow that count.
   if (!(s.angular_accuracy_deg >= 1e-6 && s.angular_accuracy_deg <= 90.0))
-    check.fail("sensor.angular_accuracy_deg", "expected 0 < value <= 90 (degrees)");
+    check.fail("sensor.angular_accuracy_deg",
+               "expected 0 < value <= 90 (degrees), got " + FieldChecker::describe(sensor["angular_accuracy_deg"]));
 }
 
 bool ScanLogReader::next(ScanRecord& record) {

@@ -1,4 +1,5 @@
 #pragma once
+#include <limits>
 #include <optional>
 #include <set>
 #include <string>
@@ -30,7 +31,7 @@ class YamlSection {
     try {
       value = v.as<T>();
     } catch (const YAML::Exception&) {
-      fail(key, "expected " + typeName<T>() + ", got \"" + scalar(v) + "\"");
+      fail(key, "expected " + typeName<T>() + outOfTypeRange<T>(v) + ", got \"" + scalar(v) + "\"");
     }
   }
 
@@ -62,7 +63,20 @@ class YamlSection {
  private:
   [[noreturn]] void failOutOfRange(const char* key, double value, const char* expected) const;
   std::string unknownKeyProblem(const std::string& key) const;
-  static std::string scalar(const YAML::Node& v) { return v.IsScalar() ? v.Scalar() : "a non-scalar"; }
+  static std::string scalar(const YAML::Node& v) { return v.IsScalar() ? v.Scalar() : "a list or mapping"; }
+  // An integer the type cannot hold (-1 for a count, 1e20 digits) is one all
+  // the same: the message says which integers are.
+  template <typename T>
+  static std::string outOfTypeRange(const YAML::Node& v) {
+    if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>) {
+      const std::string text = v.IsScalar() ? v.Scalar() : "";
+      const std::size_t digits = !text.empty() && (text[0] == '-' || text[0] == '+') ? 1 : 0;
+      if (text.size() > digits && text.find_first_not_of("0123456789", digits) == std::string::npos)
+        return " from " + std::to_string(std::numeric_limits<T>::min()) + " to " +
+               std::to_string(std::numeric_limits<T>::max());
+    }
+    return "";
+  }
   template <typename T>
   static std::string typeName() {
     if constexpr (std::is_same_v<T, bool>) return "true or false";
