@@ -70,7 +70,8 @@ int main(int argc, char** argv) {
   app.add_option("--enclave", settings.security.enclave,
                  "DDS Security enclave directory (deploy/security/make-keystore.sh; default: security off)");
   app.add_option("--frame-id", frame, "LaserScan frame_id")->capture_default_str();
-  app.add_option("--rate", rate_hz, "scans per second (0: the recorded pace)")->check(scanfilter::cli::numberAtLeast(0.0, "scans per second"));
+  app.add_option("--rate", rate_hz, "scans per second (0: the recorded pace)")
+      ->check(scanfilter::cli::numberAtLeast(0.0, "scans per second"));
   app.add_option("--wait-readers", wait_readers, "wait for this many scan readers before publishing")
       ->check(CLI::Range(0, kMaxWaitReaders))
       ->capture_default_str();

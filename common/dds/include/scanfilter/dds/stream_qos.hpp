@@ -10,8 +10,7 @@ eprosima::fastrtps::Duration_t toDuration(double seconds);
 // QoS of the scan streams between the pipeline's stages: reliable and
 // keep-all with a bounded queue, so a fast producer is slowed down by the
 // slowest consumer (write() blocks) instead of losing scans.
-// A deeper queue is a configuration mistake (each sample of a 3,600-beam scan
-// is ~30 kB per slot), not a need.
+// A deeper queue than this is a typo, not a need (the services use 64).
 inline constexpr int kMaxQueueDepth = 100000;
 
 struct StreamQos {
