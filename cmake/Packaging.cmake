@@ -30,7 +30,7 @@ endif()
 set(installed_programs $<TARGET_FILE:scanfilter>)
 foreach(twin ${SCANFILTER_INSTALLED_TWINS})
   string(REGEX REPLACE "^.*:" "" name ${twin})
-  list(APPEND installed_programs ${SCANFILTER_INSTALLED_BIN_DIR}/${name})
+  list(APPEND installed_programs $<TARGET_FILE:${name}>)
 endforeach()
 install(CODE "
   foreach(program ${installed_programs})

@@ -31,7 +31,9 @@ done
 bad_argument() { echo "$1 (see --help)" >&2; exit 2; }
 [[ "$MATCH_TIMEOUT_S" =~ ^[0-9]+$ ]] || bad_argument "MATCH_TIMEOUT_S: whole seconds expected, got $MATCH_TIMEOUT_S"
 if [ -n "$LOG" ]; then
-  [ -f "$LOG" ] || bad_argument "--log: no such file: $LOG"
+  [ -e "$LOG" ] || bad_argument "--log: no such file: $LOG"
+  # The ingest reads a log twice (checked through, then played): a pipe cannot be.
+  [ -f "$LOG" ] || bad_argument "--log: not a regular file (a pipe or device; write it to a file first): $LOG"
 elif [ ! -f "$SCENE" ] && [ ! -f "$ROOT/config/scenes/$SCENE.yaml" ]; then
   bad_argument "--scene: neither a scene file nor a built-in scene ($(cd "$ROOT/config/scenes" && ls *.yaml | sed 's/\.yaml$//' | paste -sd ' ')), got $SCENE"
 fi
@@ -39,8 +41,12 @@ positive_number() { awk -v x="$1" 'BEGIN { exit !(x ~ /^[0-9]*\.?[0-9]+$/ && x +
 [[ "$RATE" =~ ^(recorded|max)$ ]] || positive_number "$RATE" ||
   bad_argument "--rate: expected recorded, max or a speed factor > 0, got $RATE"
 [[ "$DOMAIN" =~ ^[0-9]+$ ]] && [ "$DOMAIN" -le 232 ] || bad_argument "--domain: expected a DDS domain id 0-232, got $DOMAIN"
+DOMAIN=$((10#$DOMAIN))  # 010 is 10, as the services read it
 mkdir -p "$OUT"
 OUT="$(cd "$OUT" && pwd)"  # absolute: the configs written below are read from $OUT
+# A run's outputs are this run's: an earlier run's in the same folder would
+# be named below as if this one had written them.
+rm -f "$OUT/pipeline.labeled.scanlog.jsonl" "$OUT"/map.{png,pgm,yaml}
 # The ingest's source, written as a config next to the output.
 INGEST_CFG="$OUT/scan_ingest.yaml"
 {
@@ -180,7 +186,7 @@ if [ "$status" = 0 ] && [ -n "$published" ]; then
   done
 fi
 stop_all  # the recorder writes its last scans, puts its file in place and says how many
-recorded=$(recorder_says '^recorded \([0-9]*\) scans -> .*')
+recorded=$(recorder_says '^recorded \([0-9]*\) scans.*')  # "-> FILE", or "; nothing written" for 0
 if [ "$status" = 0 ]; then
   echo "scan_ingest published ${published:-an unknown number of} scans; the recorder holds ${recorded:-none}"
 else

@@ -1,3 +1,5 @@
+#include <chrono>
+
 #include <gtest/gtest.h>
 
 #include "scanfilter/filter_config.hpp"
@@ -284,6 +286,33 @@ TEST(FilterConfigErrors, AKeyGivenTwiceIsAnErrorNamingBothLines) {
   EXPECT_EQ(errorOf("jump_filter:\n  alpha: 0.6\npenetration_filter:\n  alpha: 0.6\n").find("duplicate"),
             std::string::npos)
       << "the same key in two mappings is two keys";
+}
+
+// An alias is the node its anchor names: a mapping that holds an alias of
+// itself is a cycle, and nine levels of ten aliases a billion nodes. Each
+// mapping is checked for keys given twice once, where it is written.
+TEST(FilterConfigErrors, AliasesAreNeitherACycleNorABillionNodes) {
+  EXPECT_EQ(errorOf("jump_filter: &x {alpha: 0.6, more: *x}\n"),
+            "f.yaml:1: jump_filter.more: unknown key (not one of the 23 keys jump_filter takes)")
+      << "a cycle";
+  std::string laughs = "a0: &a0 [x, x, x, x, x, x, x, x, x, x]\n";
+  for (int level = 1; level < 9; ++level) {
+    const std::string a = "*a" + std::to_string(level - 1);
+    laughs += "a" + std::to_string(level) + ": &a" + std::to_string(level) + " [" + a;
+    for (int i = 1; i < 10; ++i) laughs += ", " + a;
+    laughs += "]\n";
+  }
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EQ(errorOf(laughs), "f.yaml:1: a0: unknown section; expected jump_filter or penetration_filter");
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5)) << "the aliases were followed";
+}
+
+// Integers as a person writes them: yaml-cpp alone reads 010 as octal 8.
+TEST(FilterConfig, IntegersAreDecimal) {
+  EXPECT_EQ(parseFilterConfig("penetration_filter:\n  max_cache_frames: 010\n", "f.yaml").params.penetration.max_cache_frames, 10u);
+  EXPECT_EQ(parseFilterConfig("penetration_filter:\n  max_cache_frames: +12\n", "f.yaml").params.penetration.max_cache_frames, 12u);
+  EXPECT_EQ(errorOf("penetration_filter:\n  max_cache_frames: 0x10\n"),
+            "f.yaml:2: penetration_filter.max_cache_frames: expected an integer, got \"0x10\"");
 }
 
 TEST(FilterConfigErrors, NameFileLineAndKey) {

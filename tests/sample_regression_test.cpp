@@ -171,7 +171,10 @@ TEST(SampleRegression, ServiceConfigProfilesNameTooLong) {
     loadServiceConfig(path, "127.0.0.1:9470", {});
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(":2: service.profiles_file: no such file"), std::string::npos) << e.what();
+    // Said as what the file system answered, not as "no such file".
+    const std::string what = e.what();
+    EXPECT_NE(what.find(":2: service.profiles_file: cannot look at /"), std::string::npos) << what;
+    EXPECT_NE(what.find(": File name too long"), std::string::npos) << what;
   }
   std::remove(path.c_str());
 }

@@ -9,6 +9,9 @@
 #include "commands.hpp"
 #include "scanfilter/cli/option_checks.hpp"
 #include "scanfilter/input_error.hpp"
+#include "scanfilter/plausible_bounds.hpp"
+#include "scanfilter/scan_source.hpp"
+#include "scanfilter/sim/lidar_model.hpp"
 
 using namespace scanfilter::cli;
 
@@ -16,7 +19,7 @@ namespace {
 // Every command that reads a CARMEN log takes its "no return" reading.
 void addCarmenRangeMax(CLI::App* command, double& range_max) {
   command->add_option("--carmen-range-max", range_max, "CARMEN logs: ranges at or above this are no return (m)")
-      ->check(numberAtLeast(0.0, "m", true))
+      ->check(numberFromTo(scanfilter::kMinCarmenRangeMax, scanfilter::kMaxPlausibleRange, "m"))
       ->capture_default_str();
 }
 }  // namespace
@@ -36,10 +39,13 @@ int main(int argc, char** argv) {
   auto* simulate = app.add_subcommand("simulate", "Simulate a labelled scan log of a scene");
   simulate->add_option("--scene", sim.scene, "built-in scene name (hall, home, office) or a scene YAML file")->capture_default_str();
   simulate->add_option("--sensor", sim.sensor, "sensor preset (tof, triangulation) or a sensor YAML file; default: the scene's own sensor");
-  simulate->add_option("--beams", sim.beams, "beams a turn (angular step 360°/N); default: the sensor's own")->check(CLI::PositiveNumber);
+  simulate->add_option("--beams", sim.beams, "beams a turn (angular step 360°/N); default: the sensor's own")->check(CLI::Range(1, scanfilter::sim::kMaxSimulatedBeams));
   simulate->add_flag("--true-poses", sim.true_poses, "log the true poses (default: odometry with the scene's drift, 1 %, 0.5°/m)");
-  simulate->add_option("--seed", sim.seed, "random seed: same scene and seed, same scans")->capture_default_str();
-  simulate->add_option("--max-frames", sim.max_frames, "stop after this many scans (0: whole trajectory)")->check(CLI::NonNegativeNumber);
+  simulate->add_option("--seed", sim.seed, "random seed: same scene and seed, same scans")
+      ->capture_default_str()
+      ->check(wholeNumber("a seed"));
+  simulate->add_option("--max-frames", sim.max_frames, "stop after this many scans (0: whole trajectory)")
+      ->check(wholeNumber("a scan count"));
   simulate->add_option("-o,--output", sim.output, "output scan log (.scanlog.jsonl)")->required();
 
   ReplayOptions replay;
@@ -61,8 +67,8 @@ int main(int argc, char** argv) {
   ren->add_option("-o,--output", render.output, "PNG file")->required();
   ren->add_option("--title", render.title, "title printed above the panels");
   ren->add_option("--pixels", render.pixels, "size of each panel's longer side")->capture_default_str()->check(CLI::Range(100, 8000));
-  ren->add_option("--first-frame", render.first_frame, "first scan drawn (0-based)")->check(CLI::NonNegativeNumber);
-  ren->add_option("--frames", render.frames, "scans drawn (0: all from the first)")->check(CLI::NonNegativeNumber);
+  ren->add_option("--first-frame", render.first_frame, "first scan drawn (0-based)")->check(wholeNumber("a scan index"));
+  ren->add_option("--frames", render.frames, "scans drawn (0: all from the first)")->check(wholeNumber("a scan count"));
 
   InfoOptions info;
   auto* inf = app.add_subcommand("info", "Summarise a scan log, CARMEN log or Mines URG-04LX log");
@@ -92,13 +98,19 @@ int main(int argc, char** argv) {
                                  "Compare the two-step filter with the baselines on labelled logs (equal tuning budgets)");
   ben->add_option("logs", bench.logs, "labelled scan logs to score on (default: built-in scenes at --seeds)")->check(CLI::ExistingFile);
   ben->add_option("--tune-log", bench.tune_logs, "labelled scan log to tune on (repeatable; default: built-in scenes at --tune-seed)")->check(CLI::ExistingFile);
-  ben->add_option("--tune-seed", bench.tune_seed, "simulator seed of the tuning logs")->capture_default_str();
-  ben->add_option("--seeds", bench.test_seeds, "simulator seeds of the test logs")->delimiter(',')->capture_default_str();
+  ben->add_option("--tune-seed", bench.tune_seed, "simulator seed of the tuning logs")
+      ->capture_default_str()
+      ->check(wholeNumber("a seed"));
+  ben->add_option("--seeds", bench.test_seeds, "simulator seeds of the test logs")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(wholeNumber("a seed"));
   ben->add_option("--budget", bench.budget, "sweep evaluations per filter")->capture_default_str()->check(CLI::Range(1, 10000));
   ben->add_option("--config", bench.config, "our filter's config YAML (default: built-in defaults)")->check(CLI::ExistingFile);
   ben->add_option("-o,--output-dir", bench.output_dir, "write accuracy-comparison.md and the PNG figures here");
   ben->add_option("--sensor", bench.sensor, "sensor preset of the simulated logs (tof, triangulation, or a file; default: each scene's own)");
-  ben->add_option("--max-frames", bench.max_frames, "scans per simulated log (0: whole trajectory)")->check(CLI::NonNegativeNumber);
+  ben->add_option("--max-frames", bench.max_frames, "scans per simulated log (0: whole trajectory)")
+      ->check(wholeNumber("a scan count"));
   // A plain flag and a callback: CLI11 prints a negated flag's default as "{false}".
   ben->add_flag_callback("--no-robustness", [&bench] { bench.robustness = false; },
                          "skip the robustness variants (noise, resolution, drift)");

@@ -16,10 +16,13 @@ std::string shareOrNa(double share, std::size_t of) {
 }
 
 void printClass(std::ostream& out, const char* name, const RemovalClassScore& s) {
-  const std::size_t f1_of = s.truth == 0 || s.labelled == 0 ? 0 : 1;
+  // F1 is 0 when either side is empty and the other is not: every artefact
+  // missed, or every removal wrong. Only with neither is there nothing to score.
+  const std::size_t f1_of = s.truth + s.labelled;
+  const double f1 = s.truth == 0 || s.labelled == 0 ? 0.0 : s.f1();
   out << "  " << std::left << std::setw(13) << name << std::right << std::setw(9) << s.truth << std::setw(10)
       << shareOrNa(s.precision(), s.labelled) << std::setw(10) << shareOrNa(s.recall(), s.truth) << std::setw(10)
-      << shareOrNa(s.f1(), f1_of) << "\n";
+      << shareOrNa(f1, f1_of) << "\n";
 }
 
 constexpr int kCauseColumn = 31;  // characters: "displaced at grazing incidence" and a space

@@ -1,17 +1,15 @@
 #include "ingest_settings.hpp"
 
+#include <filesystem>
+
 #include "scanfilter/input_error.hpp"
+#include "scanfilter/plausible_bounds.hpp"
+#include "scanfilter/scan_source.hpp"
 #include "scanfilter/sim/scene.hpp"
 #include "scanfilter/yaml_section.hpp"
 
 namespace scanfilter::ingest {
 
-namespace {
-// m: what a CARMEN log's "no return" reading may be taken from; any laser's
-// limit lies between.
-constexpr double kMinCarmenRangeMax = 0.01;
-constexpr double kMaxCarmenRangeMax = 1e4;
-}  // namespace
 
 IngestSettings readIngestSettings(const dds_io::ServiceConfigFile& config) {
   IngestSettings s;
@@ -29,13 +27,17 @@ IngestSettings readIngestSettings(const dds_io::ServiceConfigFile& config) {
   s.path = config.resolvePath(s.path);
   if (s.kind == "log") source.requireFile("path", s.path);
   if (s.kind == "simulator") {
+    // A scene file, like the log, is found from the config's folder (a
+    // service's working directory is /); a built-in name stays as it is.
+    std::error_code error;
+    if (std::filesystem::is_regular_file(config.resolvePath(s.scene), error)) s.scene = config.resolvePath(s.scene);
     try {
       sim::findScene(s.scene);
     } catch (const InputError& e) {
       source.fail("scene", e.what());
     }
   }
-  source.requireRange("carmen_range_max", s.carmen_range_max, kMinCarmenRangeMax, kMaxCarmenRangeMax,
+  source.requireRange("carmen_range_max", s.carmen_range_max, kMinCarmenRangeMax, kMaxPlausibleRange,
                       "0.01-10000 (m; CARMEN logs write 80 for no return)");
   source.rejectUnknownKeys();
   YamlSection live(config.root, "live", config.path);

@@ -29,9 +29,9 @@ std::unique_ptr<ScanSource> openSource(const IngestSettings& s) {
     const ScanSourceOptions options{.carmen_range_max = s.carmen_range_max};
     // Read through once before any scan is published: a log cut short or
     // with a bad line fails here, not after half of it went downstream.
-    if (const auto check = checkLogToEnd(s.path, options))
-      spdlog::info("{}: read to its end: {} scans ({} stamps earlier than the scan before, {} equal to it)", s.path,
-                   check->scans, check->stamp_regressions, check->stamp_repeats);
+    const LogCheck check = checkLogToEnd(s.path, options);
+    spdlog::info("{}: read to its end: {} scans ({} stamps earlier than the scan before, {} equal to it)", s.path,
+                 check.scans, check.stamp_regressions, check.stamp_repeats);
     return openScanSource(s.path, options);
   }
   return std::make_unique<sim::ScanSimulator>(sim::findScene(s.scene), s.seed);

@@ -27,6 +27,16 @@ expect_refused() {
 }
 
 "$SF" simulate --scene hall --seed 1 --max-frames 5 -o "$WORK/a.scanlog.jsonl" > /dev/null
+expect_refused 105 "--seed: expected a seed: a whole number >= 0, got -1" \
+  "$SF" simulate --scene hall --seed -1 -o "$WORK/x.scanlog.jsonl"
+
+# A pipe: the reader would open it again from its start, and wait for ever.
+mkfifo "$WORK/pipe"
+(timeout 20 cat "$WORK/a.scanlog.jsonl" > "$WORK/pipe" 2>/dev/null || true) &
+FEEDER=$!
+expect_refused 2 "pipe: not a regular file" timeout 10 "$SF" info "$WORK/pipe"
+kill "$FEEDER" 2>/dev/null || true
+wait "$FEEDER" 2>/dev/null || true
 "$SF" simulate --scene office --seed 1 --max-frames 5 -o "$WORK/b.scanlog.jsonl" > /dev/null
 expect_refused 2 "neither log carries labels" "$SF" diff "$WORK/a.scanlog.jsonl" "$WORK/b.scanlog.jsonl"
 "$SF" replay -q "$WORK/a.scanlog.jsonl" -o "$WORK/a.labelled.jsonl"
@@ -35,7 +45,7 @@ expect_refused 1 "scan 0: 360 vs 0 labels" "$SF" diff "$WORK/a.labelled.jsonl" "
 printf 'jump_filter:\n  alpha: 0.6\n  alpha: 50\n' > "$WORK/twice.yaml"
 expect_refused 2 "twice.yaml:3: jump_filter.alpha: duplicate key (first on line 2)" \
   "$SF" replay -q --config "$WORK/twice.yaml" "$WORK/a.scanlog.jsonl"
-expect_refused 105 "--carmen-range-max: expected a number > 0 (m), got -1" \
+expect_refused 105 "--carmen-range-max: expected a number from 0.01 to 10000 (m), got -1" \
   "$SF" info --carmen-range-max -1 "$WORK/a.scanlog.jsonl"
 
 if [ -x "$BUILD/dds_tools/scan_recorder" ]; then
@@ -45,7 +55,9 @@ if [ -x "$BUILD/dds_tools/scan_recorder" ]; then
   expect_refused 105 "--rate: expected a number >= 0 (scans per second), got -5" \
     "$BUILD/dds_tools/ros_scan_publisher" --rate -5 "$WORK/a.scanlog.jsonl"
   # Nothing published: the recorder ends at its timeout and says no file was written.
-  out=$("$REC" -o "$WORK/none.jsonl" --timeout 1 2>&1) ||
+  # A domain of its own: without a private network namespace (not root) a
+  # demo on the default domain 0 could be publishing.
+  out=$("$REC" -o "$WORK/none.jsonl" --timeout 1 --domain $((RANDOM % 100 + 100)) 2>&1) ||
     fail "the recorder failed with nothing to record: $out"
   [[ "$out" == *"recorded 0 scans; nothing written to $WORK/none.jsonl"* ]] || fail "recorder: $out"
   [ ! -e "$WORK/none.jsonl" ] || fail "the recorder wrote a file without a scan"

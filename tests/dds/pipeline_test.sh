@@ -309,7 +309,7 @@ config)
       fail "$svc did not name the bad key and the one meant: $out"
   done
   # A path or value that cannot work is reported at the line that gave it,
-  # before any participant starts: "svc.yaml:LINE: KEY: ...".
+  # and the service exits before publishing anything: "svc.yaml:LINE: KEY: ...".
   refused() {  # svc sed-expression expected-text
     sed "s#profiles_file: ../deploy#profiles_file: $SRC/deploy#; s#config: filter.yaml#config: $SRC/config/filter.yaml#; $2" \
       "$SRC/config/$1.yaml" > "$WORK/$1.yaml"

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -47,25 +48,36 @@ std::string childPath(const std::string& path, const std::string& child) {
 
 // YAML allows a key once in a mapping. yaml-cpp keeps both entries and
 // answers the first, so a line appended to override a setting would be
-// ignored without a word.
-void rejectDuplicateKeys(const YAML::Node& node, const std::string& file, const std::string& path) {
-  if (node.IsSequence()) {
-    for (std::size_t i = 0; i < node.size(); ++i)
-      rejectDuplicateKeys(node[i], file, path + "[" + std::to_string(i) + "]");
-    return;
+// ignored without a word. Each mapping is checked once, where it is written:
+// an alias (*x) is the node its anchor (&x) names, so following aliases
+// would walk a cycle for ever, or a chain of them a billion times.
+class DuplicateKeyCheck {
+ public:
+  explicit DuplicateKeyCheck(const std::string& file) : file_(file) {}
+
+  void check(const YAML::Node& node, const std::string& path) {
+    if (!node.IsSequence() && !node.IsMap()) return;
+    if (!checked_.insert(node.Mark().pos).second) return;  // an alias of a node checked already
+    if (node.IsSequence()) {
+      for (std::size_t i = 0; i < node.size(); ++i) check(node[i], path + "[" + std::to_string(i) + "]");
+      return;
+    }
+    std::map<std::string, std::size_t> first_line;
+    for (const auto& entry : node) {
+      if (!entry.first.IsScalar()) continue;  // keyText reports it where the key is read
+      const std::string& key = entry.first.Scalar();
+      const auto [seen, fresh] = first_line.emplace(key, lineOf(entry.first));
+      if (!fresh)
+        throw InputError(file_, lineOf(entry.first), childPath(path, key),
+                         "duplicate key (first on line " + std::to_string(seen->second) + "); give each key once");
+      check(entry.second, childPath(path, key));
+    }
   }
-  if (!node.IsMap()) return;
-  std::map<std::string, std::size_t> first_line;
-  for (const auto& entry : node) {
-    if (!entry.first.IsScalar()) continue;  // keyText reports it where the key is read
-    const std::string& key = entry.first.Scalar();
-    const auto [seen, fresh] = first_line.emplace(key, lineOf(entry.first));
-    if (!fresh)
-      throw InputError(file, lineOf(entry.first), childPath(path, key),
-                       "duplicate key (first on line " + std::to_string(seen->second) + "); give each key once");
-    rejectDuplicateKeys(entry.second, file, childPath(path, key));
-  }
-}
+
+ private:
+  const std::string& file_;
+  std::set<int> checked_;  // the text positions of the mappings and lists checked
+};
 }  // namespace
 
 YamlSection::YamlSection(const YAML::Node& parent, const std::string& key, std::string file, std::string path_prefix)
@@ -155,7 +167,10 @@ void YamlSection::requireFile(const char* key, const std::string& path) const {
   // The error_code forms: a name too long for the file system is "no such
   // file" too, not a filesystem_error (found by penetration_filter_config_fuzz).
   std::error_code error;
-  if (!std::filesystem::exists(path, error)) fail(key, "no such file: " + path);
+  const bool exists = std::filesystem::exists(path, error);
+  // Not "no such file" when it could not be looked at (a folder the service's user may not enter).
+  if (error) fail(key, "cannot look at " + path + ": " + error.message());
+  if (!exists) fail(key, "no such file: " + path);
   if (std::filesystem::is_directory(path, error)) fail(key, "is a directory, expected a file: " + path);
 }
 
@@ -176,7 +191,7 @@ YAML::Node parseYaml(const std::string& text, const std::string& file) {
   } catch (const YAML::ParserException& e) {
     throw InputError(file, static_cast<std::size_t>(e.mark.line) + 1, "", "malformed YAML: " + e.msg);
   }
-  rejectDuplicateKeys(root, file, "");
+  DuplicateKeyCheck(file).check(root, "");
   return root;
 }
 

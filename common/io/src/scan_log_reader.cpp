@@ -194,7 +194,7 @@ void ScanLogReader::parseHeader() {
   // threshold is scaled by it, and 1e-300 would overflow that count.
   if (!(s.angular_accuracy_deg >= 1e-6 && s.angular_accuracy_deg <= 90.0))
     check.fail("sensor.angular_accuracy_deg",
-               "expected 0 < value <= 90 (degrees), got " + FieldChecker::describe(sensor["angular_accuracy_deg"]));
+               "expected 1e-6 <= value <= 90 (degrees), got " + FieldChecker::describe(sensor["angular_accuracy_deg"]));
 }
 
 bool ScanLogReader::next(ScanRecord& record) {

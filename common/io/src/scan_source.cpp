@@ -55,16 +55,20 @@ std::unique_ptr<ScanSource> openScanSource(const std::string& path, const ScanSo
     if (first.find_first_not_of(" \t") != std::string::npos) break;
   }
   if (!any_line) throw InputError(path, 0, "", "empty file: expected a scan log, a CARMEN log or a Mines log");
+  // The reader opens the file again from its start: a pipe's first line is gone by then.
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error))
+    throw InputError(path, 0, "", "not a regular file (a pipe or device cannot be read from its start twice; "
+                                  "write it to a file first)");
   const auto start = first.find_first_not_of(" \t");
-  if (start != std::string::npos && first[start] == '{') return std::make_unique<ScanLogReader>(path, options.warn_stamps);
+  if (start != std::string::npos && first[start] == '{')
+    return std::make_unique<ScanLogReader>(path, options.warn_stamps);
   if (MinesLogReader::looksLikeMinesLine(first))
     return std::make_unique<MinesLogReader>(path, MinesRobotModel{}, options.warn_stamps);
   return std::make_unique<CarmenLogReader>(path, options);
 }
 
-std::optional<LogCheck> checkLogToEnd(const std::string& path, ScanSourceOptions options) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) return std::nullopt;
+LogCheck checkLogToEnd(const std::string& path, ScanSourceOptions options) {
   options.warn_stamps = false;  // the pass that plays the log warns, at the scan it reaches
   auto source = openScanSource(path, options);
   LogCheck check;

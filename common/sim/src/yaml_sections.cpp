@@ -6,10 +6,8 @@ namespace scanfilter::sim {
 
 namespace {
 constexpr double kDegToRad = std::numbers::pi / 180.0;
-// Bounds on the counts a scene or sensor file may give: far beyond any real
-// scanner (a 0.0036° step) and any useful footprint sampling, low enough
-// that the arrays they size fit in memory.
-constexpr int kMaxBeams = 100000;
+// Bound on the footprint rays a scene or sensor file may give: far beyond
+// any useful sampling (beams: kMaxSimulatedBeams).
 constexpr int kMaxFootprintRays = 1000;
 
 RangeMixing mixing(const SceneParser& p, const YAML::Node& map, RangeMixing fallback) {
@@ -40,7 +38,7 @@ void readSensor(const SceneParser& p, const YAML::Node& node, Scene& scene, bool
   s.range_max = p.positive(node, "sensor", "range_max", s.range_max);
   if (!(s.range_max > s.range_min)) p.fail(node["range_max"], "sensor.range_max", "must exceed range_min");
   s.angular_accuracy_deg = p.positive(node, "sensor", "angular_accuracy_deg", s.angular_accuracy_deg);
-  scene.lidar.beams = p.count(node, "sensor", "beams", scene.lidar.beams, kMaxBeams);
+  scene.lidar.beams = p.count(node, "sensor", "beams", scene.lidar.beams, kMaxSimulatedBeams);
   scene.lidar.rate_hz = p.positive(node, "sensor", "rate_hz", scene.lidar.rate_hz);
 }
 

@@ -1,4 +1,5 @@
 #pragma once
+#include <charconv>
 #include <limits>
 #include <optional>
 #include <set>
@@ -28,10 +29,15 @@ class YamlSection {
   void read(const char* key, T& value) {
     const YAML::Node v = take(key);
     if (!v) return;
-    try {
-      value = v.as<T>();
-    } catch (const YAML::Exception&) {
-      fail(key, "expected " + typeName<T>() + outOfTypeRange<T>(v) + ", got \"" + scalar(v) + "\"");
+    if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>) {
+      if (!readDecimal(v, value))
+        fail(key, "expected " + typeName<T>() + outOfTypeRange<T>(v) + ", got \"" + scalar(v) + "\"");
+    } else {
+      try {
+        value = v.as<T>();
+      } catch (const YAML::Exception&) {
+        fail(key, "expected " + typeName<T>() + ", got \"" + scalar(v) + "\"");
+      }
     }
   }
 
@@ -64,6 +70,20 @@ class YamlSection {
   [[noreturn]] void failOutOfRange(const char* key, double value, const char* expected) const;
   std::string unknownKeyProblem(const std::string& key) const;
   static std::string scalar(const YAML::Node& v) { return v.IsScalar() ? v.Scalar() : "a list or mapping"; }
+  // An integer in decimal, as a person writes it: yaml-cpp would read 010
+  // as octal 8 and 0x10 as 16.
+  template <typename T>
+  static bool readDecimal(const YAML::Node& v, T& value) {
+    if (!v.IsScalar()) return false;
+    const std::string& text = v.Scalar();
+    const char* first = text.data() + (!text.empty() && text[0] == '+' ? 1 : 0);
+    const char* last = text.data() + text.size();
+    T parsed{};
+    const auto [end, error] = std::from_chars(first, last, parsed, 10);
+    if (error != std::errc() || end != last || first == last) return false;
+    value = parsed;
+    return true;
+  }
   // An integer the type cannot hold (-1 for a count, 1e20 digits) is one all
   // the same: the message says which integers are.
   template <typename T>

@@ -1,6 +1,5 @@
 #pragma once
 #include <memory>
-#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -33,12 +32,16 @@ class ScanSource {
 };
 
 // Options for logs whose header does not say everything.
+// The smallest carmen_range_max taken (m); the largest is kMaxPlausibleRange.
+inline constexpr double kMinCarmenRangeMax = 0.01;
+
 struct ScanSourceOptions {
   double carmen_range_max = 80.0;  // m; CARMEN logs write >= 80 m for "no return"
   bool warn_stamps = true;         // warn once about stamps that step back or stand still (else only count them)
 };
 
-// Opens a scan log or a CARMEN log (plain or gzip), told apart by content.
+// Opens a scan log, a CARMEN log or a Mines log (plain or gzip), told apart
+// by its first line; a regular file only (the reader reads it from its start).
 std::unique_ptr<ScanSource> openScanSource(const std::string& path,
                                            const ScanSourceOptions& options = {});
 
@@ -51,7 +54,7 @@ struct LogCheck {
 
 // Reads a log through to its end, every line parsed, so that a file cut short
 // or a bad line anywhere fails (InputError, with its line) before a player
-// publishes any of it. nullopt for what cannot be read twice (a pipe).
-std::optional<LogCheck> checkLogToEnd(const std::string& path, ScanSourceOptions options = {});
+// publishes any of it.
+LogCheck checkLogToEnd(const std::string& path, ScanSourceOptions options = {});
 
 }  // namespace scanfilter

@@ -24,6 +24,19 @@ inline CLI::Validator numberAtLeast(double lo, const std::string& unit, bool exc
       "NUMBER " + bound);
 }
 
+// A finite number from `lo` to `hi`.
+inline CLI::Validator numberFromTo(double lo, double hi, const std::string& unit) {
+  const std::string range = CLI::detail::to_string(lo) + " to " + CLI::detail::to_string(hi);
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        double value = 0;
+        const bool number = CLI::detail::lexical_cast(text, value) && std::isfinite(value);
+        if (number && value >= lo && value <= hi) return {};
+        return "expected a number from " + range + " (" + unit + "), got " + text;
+      },
+      "NUMBER " + range);
+}
+
 // A whole number 0 or more, digits only.
 inline CLI::Validator wholeNumber(const std::string& what) {
   return CLI::Validator(

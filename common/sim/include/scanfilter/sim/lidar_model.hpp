@@ -25,6 +25,11 @@ struct SpecularSurface {
   double diffuse_return = 0.1;   // chance of a direct return outside the lobe
 };
 
+// Most beams a turn a scene, a sensor file or `simulate --beams` may ask for:
+// far beyond any real scanner (a 0.0036° step), low enough that the arrays
+// they size fit in memory.
+inline constexpr int kMaxSimulatedBeams = 100000;
+
 struct LidarModel {
   RangeMixing mixing = RangeMixing::kInverseDepth;
   int beams = 360;
