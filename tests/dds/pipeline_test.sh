@@ -333,12 +333,15 @@ launcher)
   LAUNCH=100
   "$SF" simulate --scene hall --seed 4 --max-frames $LAUNCH -o "$WORK/launch_in.scanlog.jsonl" > /dev/null
   "$SF" replay "$WORK/launch_in.scanlog.jsonl" --config "$SRC/config/filter.yaml" -o "$WORK/launch_offline.scanlog.jsonl" -q
+  launch() {  # log rate out-dir: deploy/run-pipeline.sh on that log; sets out and code
+    set +e
+    out=$(BUILD_DIR="$BUILD" timeout -k 10 120 bash "$SRC/deploy/run-pipeline.sh" --log "$1" --rate "$2" --out "$3" \
+            --domain "$DOMAIN" 2>&1)
+    code=$?
+    set -e
+  }
   launched_ms=$(date +%s%3N)
-  set +e
-  out=$(BUILD_DIR="$BUILD" timeout -k 10 120 bash "$SRC/deploy/run-pipeline.sh" --log "$WORK/launch_in.scanlog.jsonl" \
-          --rate max --out "$WORK/launch" --domain "$DOMAIN" 2>&1)
-  code=$?
-  set -e
+  launch "$WORK/launch_in.scanlog.jsonl" max "$WORK/launch"
   echo "$out"
   [ "$code" = 0 ] || fail "run-pipeline.sh exited with $code"
   # Its own account: every stage matched, and how long that took.
@@ -361,21 +364,14 @@ launcher)
   grep -q "^labelled output: $WORK/launch/pipeline.labeled.scanlog.jsonl$" <<<"$out" ||
     fail "run-pipeline.sh did not say where the labelled output is"
   # Its arguments are checked before anything starts, naming the argument.
-  set +e
-  bad=$(BUILD_DIR="$BUILD" bash "$SRC/deploy/run-pipeline.sh" --rate fast --out "$WORK/bad_rate" --domain "$DOMAIN" 2>&1)
-  code=$?
-  set -e
-  [ "$code" = 2 ] && [[ "$bad" == "--rate: expected recorded, max or a speed factor > 0, got fast"* ]] ||
-    fail "run-pipeline.sh --rate fast: exit $code: $bad"
+  launch "$WORK/launch_in.scanlog.jsonl" fast "$WORK/bad_rate"
+  [ "$code" = 2 ] && [[ "$out" == "--rate: expected recorded, max or a speed factor > 0, got fast"* ]] ||
+    fail "run-pipeline.sh --rate fast: exit $code: $out"
   [ ! -e "$WORK/bad_rate" ] || fail "run-pipeline.sh --rate fast made its output directory"
   # An ingest that fails: its reason in the launcher's own output, and no
   # output named that was not written.
   head -c 20000 "$WORK/launch_in.scanlog.jsonl" > "$WORK/cut.scanlog.jsonl"
-  set +e
-  out=$(BUILD_DIR="$BUILD" timeout -k 10 120 bash "$SRC/deploy/run-pipeline.sh" --log "$WORK/cut.scanlog.jsonl" \
-          --rate max --out "$WORK/cut" --domain "$DOMAIN" 2>&1)
-  code=$?
-  set -e
+  launch "$WORK/cut.scanlog.jsonl" max "$WORK/cut"
   [ "$code" = 2 ] || fail "run-pipeline.sh on a log cut short exited with $code: $out"
   [[ "$out" == *"scan_ingest failed (exit 2): $WORK/cut.scanlog.jsonl:"*"a file cut short?) (see $WORK/cut/scan_ingest.log)"* ]] ||
     fail "run-pipeline.sh did not say why the ingest failed: $out"
@@ -400,11 +396,7 @@ launcher)
   # The pause is in: the log lasts longer than it (the scans alone take 2 s at 10 Hz).
   paused_s=$(sed -n 's/^duration: *\([0-9]*\).*/\1/p' <<<"$paused_info")
   [ "${paused_s:-0}" -ge "$PAUSE_S" ] || fail "the paused log has no $PAUSE_S s pause: $paused_info"
-  set +e
-  out=$(BUILD_DIR="$BUILD" timeout -k 10 120 bash "$SRC/deploy/run-pipeline.sh" --log "$WORK/paused.scanlog.jsonl" \
-          --rate recorded --out "$WORK/paused" --domain "$DOMAIN" 2>&1)
-  code=$?
-  set -e
+  launch "$WORK/paused.scanlog.jsonl" recorded "$WORK/paused"
   [ "$code" = 0 ] || fail "run-pipeline.sh on a log with a $PAUSE_S s pause exited with $code: $out"
   grep -q "^scan_ingest published $PAUSED scans; the recorder holds $PAUSED$" <<<"$out" ||
     fail "run-pipeline.sh on a log with a $PAUSE_S s pause: $out"
