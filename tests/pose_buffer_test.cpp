@@ -66,5 +66,21 @@ TEST(PoseBuffer, OutOfOrderSamplesAreIgnoredAndOldOnesDropped) {
   EXPECT_EQ(buffer.size(), 1u) << "samples more than 1 s older than the newest are dropped";
 }
 
+// A scan that waited while its odometry aged out is told apart from one
+// the odometry never covered (before the first sample, or in a gap).
+TEST(PoseBuffer, ForgetsOnlyWhatItOnceHeld) {
+  PoseBuffer buffer(0.5, 1.0);
+  buffer.add(t(1.0), {0, 0, 0});
+  EXPECT_FALSE(buffer.forgot(t(0.5))) << "before the first sample: never held";
+  buffer.add(t(1.5), {1, 0, 0});
+  EXPECT_FALSE(buffer.forgot(t(1.2))) << "still held";
+  buffer.add(t(2.0), {2, 0, 0});
+  buffer.add(t(2.6), {3, 0, 0});
+  EXPECT_FALSE(buffer.at(t(1.2)).has_value());
+  EXPECT_TRUE(buffer.forgot(t(1.2))) << "1.0 and 1.5 were dropped as older than 1 s";
+  EXPECT_FALSE(buffer.forgot(t(0.5))) << "before the first sample ever";
+  EXPECT_FALSE(buffer.forgot(t(2.3))) << "within what is held";
+}
+
 }  // namespace
 }  // namespace scanfilter

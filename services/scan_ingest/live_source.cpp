@@ -47,7 +47,17 @@ void LiveSource::onScan(dds_io::LaserScanMsg& msg) {
   pending.source = dds_io::sourceScanOf(msg);
   pending.arrived = std::chrono::steady_clock::now();
   std::lock_guard lock(mutex_);
+  // While the ingest holds (its reader downstream gone) nothing drains the
+  // queue: what can no longer be posed goes now, so an outage of hours does
+  // not fill the memory with scans.
+  while (!pending_.empty() && poses_.forgot(pending_.front().scan.stamp)) dropHeld();
   pending_.push_back(std::move(pending));
+}
+
+void LiveSource::dropHeld() {
+  pending_.pop_front();
+  ++dropped_held_;
+  metrics_.sampleRejected("held_too_long");
 }
 
 }  // namespace scanfilter::ingest

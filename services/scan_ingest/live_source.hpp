@@ -26,7 +26,10 @@ struct LiveSettings {
 // A live robot: LaserScan on rt/<ns>/scan and Odometry on rt/<ns>/odom from
 // the robot's driver (best effort, as ROS 2 sensor drivers publish). Each
 // scan gets the pose interpolated at its stamp; scans whose pose cannot be
-// had in time are counted ("no_pose") and dropped, never guessed.
+// had in time are counted ("no_pose") and dropped, never guessed. Scans that
+// waited longer than the odometry is kept (the ingest held while its reader
+// downstream was gone) are counted apart ("held_too_long"): their odometry
+// was there, and pointing the operator at it would send them the wrong way.
 class LiveSource {
  public:
   LiveSource(dds_io::DdsParticipant& participant, const std::string& ns, const LiveSettings& settings,
@@ -39,6 +42,7 @@ class LiveSource {
   void drain(Publish&& publish);
 
   std::size_t dropped() const { return dropped_; }
+  std::size_t droppedHeld() const { return dropped_held_; }
 
  private:
   struct Pending {
@@ -49,6 +53,7 @@ class LiveSource {
   };
   void onScan(dds_io::LaserScanMsg& msg);
   void onOdometry(dds_io::OdometryMsg& msg);
+  void dropHeld();  // the oldest pending scan, which outlived its odometry; mutex_ held
 
   LiveSettings settings_;
   dds_io::ServiceMetrics& metrics_;
@@ -56,6 +61,7 @@ class LiveSource {
   PoseBuffer poses_;
   std::deque<Pending> pending_;
   std::size_t dropped_ = 0;
+  std::size_t dropped_held_ = 0;
   dds_io::TypedReader<nav_msgs::msg::dds_::Odometry_PubSubType> odom_reader_;
   dds_io::TypedReader<sensor_msgs::msg::dds_::LaserScan_PubSubType> scan_reader_;
 };
@@ -78,6 +84,10 @@ void LiveSource::drain(Publish&& publish) {
     const bool may_come = poses_.mayStillPose(next.scan.stamp) &&
                           now - next.arrived < std::chrono::duration<double>(settings_.max_pose_wait_s);
     if (may_come) break;  // odometry for this stamp may still arrive
+    if (poses_.forgot(next.scan.stamp)) {
+      dropHeld();
+      continue;
+    }
     pending_.pop_front();
     ++dropped_;
     metrics_.sampleRejected("no_pose");

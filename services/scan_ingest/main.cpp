@@ -65,7 +65,8 @@ int runLive(ServiceRuntime& runtime, const IngestSettings& settings, ingest::Sca
       else metrics.sampleRejected("write_failed");
     });
   });
-  spdlog::info("published {} live scans, dropped {} without a pose", sequence, live.dropped());
+  spdlog::info("published {} live scans, dropped {} without a pose and {} held longer than their odometry is kept",
+               sequence, live.dropped(), live.droppedHeld());
   return 0;
 }
 

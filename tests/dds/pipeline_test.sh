@@ -4,8 +4,8 @@
 # domain id with the loopback-only profile.
 #
 #   pipeline_test.sh BUILD_DIR SOURCE_DIR CASE
-#   CASE: labels | metrics | prometheus | live | upside_down | cyclone | cyclone_upside_down | bad_samples | map |
-#         config | launcher
+#   CASE: labels | metrics | prometheus | live | live_hold | upside_down | cyclone | cyclone_upside_down | bad_samples |
+#         map | config | launcher
 set -euo pipefail
 BUILD="$1" SRC="$2" CASE="$3"
 source "$(dirname "$0")/../lib/dds_test_workspace.sh"  # private network namespace, DOMAIN, WORK, PIDS, cleanup
@@ -199,6 +199,46 @@ live)
   info_out=$("$SF" info "$WORK/live.scanlog.jsonl")
   [[ "$info_out" =~ labels:\ *valid= ]] || fail "no labels in the output"
   live_equals_offline_replay
+  ;;
+live_hold)
+  # The live ingest holds while the jump_filter is gone (kill -9, back 7 s
+  # later). The driver's scans of that time outlive their odometry (kept
+  # 20 x max_pose_gap_s + max_pose_wait_s = 4.5 s): they are counted as
+  # held_too_long, not as no_pose (the odometry never stopped), dropped as
+  # they come instead of piling up, and scans flow again after the restart.
+  HOLD_FRAMES=300 HOLD_RATE=20
+  "$SF" simulate --scene hall --seed 4 --max-frames $HOLD_FRAMES -o "$WORK/live_in.scanlog.jsonl" > /dev/null
+  cat > "$WORK/ingest.yaml" <<YAML
+service: {domain_id: $DOMAIN, profiles_file: $SRC/deploy/fastdds-loopback.xml, metrics_address: 127.0.0.1:19471}
+source: {kind: live}
+live: {scan_topic: scan, odom_topic: odom, mount: [-0.05, 0.0, 3.141592653589793], reliable: true}
+YAML
+  start_filters
+  wait_jump_to_penetration
+  "$BUILD/services/scan_ingest" --config "$WORK/ingest.yaml" > "$WORK/ingest.log" 2>&1 &
+  INGEST=$!; PIDS+=($INGEST)
+  wait_matched 19471 writer rt/posed_scan
+  "$BUILD/dds_tools/ros_scan_publisher" --domain "$DOMAIN" --rate $HOLD_RATE --reliable \
+    "$WORK/live_in.scanlog.jsonl" > "$WORK/publisher.log" 2>&1 &
+  PUB=$!; PIDS+=($PUB)
+  sleep 2
+  kill -KILL "$JUMP"; wait "$JUMP" 2>/dev/null || true
+  sleep 7
+  published_at_restart=$(metric 19471 'scanfilter_scans_published_total\{[^}]*\}')
+  "$BUILD/services/jump_filter" --domain "$DOMAIN" --metrics-address 127.0.0.1:19472 > "$WORK/jump2.log" 2>&1 &
+  JUMP=$!; PIDS+=($JUMP)
+  wait "$PUB" || fail "ros_scan_publisher failed"
+  sleep 1
+  held=$(metric 19471 'scanfilter_samples_rejected_total\{[^}]*reason="held_too_long"[^}]*\}')
+  no_pose=$(metric 19471 'scanfilter_samples_rejected_total\{[^}]*reason="no_pose"[^}]*\}')
+  published=$(metric 19471 'scanfilter_scans_published_total\{[^}]*\}')
+  echo "live hold: published ${published_at_restart:-0} before the restart, ${published:-0} in all; held_too_long ${held:-0}, no_pose ${no_pose:-0}"
+  [ "${held:-0}" -gt 0 ] || fail "no scan counted as held too long in a 7 s hold"
+  [ "${no_pose:-0}" = 0 ] || fail "$no_pose scans counted as without a pose; the odometry never stopped"
+  [ "${published:-0}" -gt "${published_at_restart:-0}" ] || fail "no scan published after the jump_filter came back"
+  kill -TERM "$INGEST"; wait "$INGEST" || fail "scan_ingest exited non-zero"
+  grep -q "dropped 0 without a pose and ${held} held longer than their odometry is kept" "$WORK/ingest.log" ||
+    fail "the ingest's last line does not count the held scans: $(tail -n 2 "$WORK/ingest.log")"
   ;;
 upside_down)
   # A LiDAR mounted upside down (roll pi): its driver's counter-clockwise

@@ -8,8 +8,12 @@ namespace scanfilter {
 
 bool PoseBuffer::add(Stamp stamp, const Pose2& pose) {
   if (!samples_.empty() && stamp <= samples_.back().stamp) return false;
+  if (samples_.empty() && !dropped_any_) first_stamp_ = stamp;
   samples_.push_back({stamp, pose});
-  while (!samples_.empty() && stamp.secondsSince(samples_.front().stamp) > keep_) samples_.pop_front();
+  while (!samples_.empty() && stamp.secondsSince(samples_.front().stamp) > keep_) {
+    samples_.pop_front();
+    dropped_any_ = true;
+  }
   return true;
 }
 

@@ -26,6 +26,13 @@ class PoseBuffer {
   // on separate streams; the first scan often arrives before any odometry.)
   bool mayStillPose(Stamp stamp) const { return samples_.empty() || samples_.back().stamp < stamp; }
 
+  // True when the samples that would pose `stamp` were there and have been
+  // dropped as older than keep_seconds: the scan waited too long (a caller
+  // that held), not a gap in the odometry.
+  bool forgot(Stamp stamp) const {
+    return dropped_any_ && stamp >= first_stamp_ && !samples_.empty() && stamp < samples_.front().stamp;
+  }
+
   std::size_t size() const { return samples_.size(); }
 
  private:
@@ -36,6 +43,8 @@ class PoseBuffer {
   double max_gap_;
   double keep_;
   std::deque<Sample> samples_;
+  Stamp first_stamp_;         // of the first sample ever added
+  bool dropped_any_ = false;  // whether a sample was dropped for its age
 };
 
 }  // namespace scanfilter
