@@ -70,6 +70,9 @@ if(SCANFILTER_BUILD_SERVICES)
     set(SCANFILTER_DOCDIR \"${CMAKE_INSTALL_DATADIR}/doc/scanfilter\")
     include(\"${PROJECT_SOURCE_DIR}/cmake/install_layout.cmake\")")
 endif()
+# The keystore maker (docs/operations.md, "DDS Security"), under the
+# package's prefix like the services it makes enclaves for.
+install(PROGRAMS deploy/security/make-keystore.sh DESTINATION ${CMAKE_INSTALL_BINDIR} RENAME scanfilter-make-keystore)
 # The README and docs/ side by side, as in the source tree, so that the
 # README's links to docs/ and the docs' links to each other and to their
 # pictures hold where they are installed.

@@ -4,7 +4,9 @@
 // feeding rviz2 or slam_toolbox from a recording.
 #include <chrono>
 #include <cmath>
+#include <iomanip>
 #include <iostream>
+#include <sstream>
 
 #include <CLI/CLI.hpp>
 
@@ -48,6 +50,8 @@ void toLaserScan(const Scan& scan, const SensorInfo& sensor, bool upside_down, c
 
 }  // namespace
 
+// Digits of the mount said for the live ingest's config: a yaw of π as π.
+constexpr int kMountDigits = 16;
 // A launcher waiting for more readers than this has a typo, not a fleet.
 constexpr int kMaxWaitReaders = 1000;
 
@@ -68,7 +72,7 @@ int main(int argc, char** argv) {
   app.add_option("--namespace", ns, "topic namespace (rt/<ns>/scan)");
   app.add_option("--profiles-file", settings.profiles_file, "Fast DDS XML profiles")->capture_default_str();
   app.add_option("--enclave", settings.security.enclave,
-                 "DDS Security enclave directory (deploy/security/make-keystore.sh; default: security off)");
+                 "DDS Security enclave directory (scanfilter-make-keystore; default: security off)");
   app.add_option("--frame-id", frame, "LaserScan frame_id")->capture_default_str();
   app.add_option("--rate", rate_hz, "scans per second (0: the recorded pace)")
       ->check(scanfilter::cli::numberAtLeast(0.0, "scans per second"));
@@ -90,6 +94,17 @@ int main(int argc, char** argv) {
     if (reliable) qos.reliability().kind = eprosima::fastdds::dds::RELIABLE_RELIABILITY_QOS;
     TypedWriter<sensor_msgs::msg::dds_::LaserScan_PubSubType> scans(participant, rosTopic(ns, "scan"), qos);
     TypedWriter<nav_msgs::msg::dds_::Odometry_PubSubType> odometry(participant, rosTopic(ns, "odom"), qos);
+    // A driver publishes no mount: the transform base -> laser is the live
+    // ingest's to know (its `live` section), and a wrong one maps nonsense
+    // without an error, so say what this log's is.
+    std::ostringstream mount;
+    mount << std::setprecision(kMountDigits) << "[" << sensor.mount.x << ", " << sensor.mount.y << ", "
+          << sensor.mount.yaw << "]";
+    std::cout << "the log's sensor is mounted at " << mount.str() << " on the base: give the live ingest `live: {mount: "
+              << mount.str() << (upside_down ? ", upside_down: true" : "") << "}`" << std::endl;
+    if (scans.matchedReaders() < wait_readers || odometry.matchedReaders() < wait_readers)
+      std::cout << "waiting for " << wait_readers << " reader(s) of " << rosTopic(ns, "scan") << " and "
+                << rosTopic(ns, "odom") << " (--wait-readers)" << std::endl;
     while (scans.matchedReaders() < wait_readers || odometry.matchedReaders() < wait_readers)
       if (ShutdownSignal::waitFor(std::chrono::milliseconds(50))) return 0;
     if (ShutdownSignal::waitFor(kDiscoverySettle)) return 0;

@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
   app.add_option("--profiles-file", participant_settings.profiles_file, "Fast DDS XML profiles")->capture_default_str();
   std::string enclave;
   app.add_option("--enclave", enclave,
-                 "DDS Security enclave directory (deploy/security/make-keystore.sh; default: security off, or "
+                 "DDS Security enclave directory (scanfilter-make-keystore; default: security off, or "
                  "--config's service.security)");
   app.add_option("--count", count, "stop after this many scans (0: until SIGINT/SIGTERM)")
       ->check(cli::wholeNumber("a scan count"));

@@ -87,11 +87,13 @@ class MapService {
     return grid_.scansIntegrated();
   }
 
-  void save() {
+  // Whether files were written: not without a save_path, nor for a map that holds nothing yet.
+  bool save() {
     last_save_ = std::chrono::steady_clock::now();
-    if (settings_.save_path.empty()) return;
+    if (settings_.save_path.empty()) return false;
     std::lock_guard lock(mutex_);
-    if (!grid_.bounds().empty()) {
+    const bool any = !grid_.bounds().empty();
+    if (any) {
       // The state and which scans it holds, in one rename.
       saveMap(grid_, settings_.save_path, progress_.toText(),
               "OCCUPANCY MAP, " + std::to_string(progress_.scans_integrated) + " SCANS");
@@ -99,6 +101,7 @@ class MapService {
       metrics_.mapSaved();
     }
     metrics_.savedMapCurrent();
+    return any;
   }
 
  private:
@@ -171,9 +174,11 @@ int main(int argc, char** argv) {
     MapService service(runtime, grid, publish, progress);
     const auto period = std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::duration<double>(1.0 / publish.rate_hz));
     runtime.runUntilStopped(period, [&] { service.tick(); });
-    service.save();
-    spdlog::info("stopping after {} scans{}", service.scansIntegrated(),
-                 publish.save_path.empty() ? "" : "; map saved to " + publish.save_path + ".*");
+    const bool saved = service.save();
+    const std::string where = publish.save_path.empty() ? ""
+                              : saved                   ? "; map saved to " + publish.save_path + ".*"
+                                                        : "; the map holds nothing, nothing saved";
+    spdlog::info("stopping after {} scans{}", service.scansIntegrated(), where);
     return 0;
   });
 }

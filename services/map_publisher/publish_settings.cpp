@@ -1,5 +1,7 @@
 #include "publish_settings.hpp"
 
+#include <filesystem>
+
 #include "scanfilter/yaml_section.hpp"
 
 namespace scanfilter::map_service {
@@ -16,6 +18,12 @@ PublishSettings readPublishSettings(const dds_io::ServiceConfigFile& config) {
   section.requireRange("save_period_s", s.save_period_s, 0.1, 1e6, "a value >= 0.1 (s)");
   section.rejectUnknownKeys();
   s.save_path = config.resolvePath(s.save_path);
+  // A typo in the folder would show only at the first save, a period later.
+  std::error_code error;
+  const auto folder = std::filesystem::path(s.save_path).parent_path();
+  if (!s.save_path.empty() && !folder.empty() && !std::filesystem::is_directory(folder, error))
+    section.fail("save_path", "no such folder: " + folder.string() + " (the map is saved as " +
+                                  std::filesystem::path(s.save_path).filename().string() + ".pgm/.yaml/.png in it)");
   return s;
 }
 

@@ -365,6 +365,8 @@ config)
   refused scan_ingest 's#^  scene: hall#  scene: kitchen#' "source.scene: kitchen: no such scene"
   refused scan_ingest 's#^  wait_timeout_s: 30.0#  wait_timeout_s: -1#' "playback.wait_timeout_s: expected 0-86400 (s), got -1"
   refused jump_filter "s#config: $SRC/config/filter.yaml#config: filtr.yaml#" "filter.config: no such file: $WORK/filtr.yaml"
+  refused map_publisher 's#^  save_path: ""#  save_path: /nonexistent/map#' \
+    "publishing.save_path: no such folder: /nonexistent (the map is saved as map.pgm/.yaml/.png in it)"
   ;;
 launcher)
   # deploy/run-pipeline.sh (what scripts/demo.sh runs) starts the ingest as

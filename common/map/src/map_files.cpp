@@ -1,6 +1,8 @@
 #include "scanfilter/map_files.hpp"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -22,7 +24,7 @@ void writeAtomically(const std::string& path, Write&& write) {
   const std::string tmp = path + ".tmp";
   {
     std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw InputError(tmp, 0, "", "cannot open for writing");
+    if (!out) throw InputError(tmp, 0, "", std::string("cannot open for writing: ") + std::strerror(errno));
     write(out);
     out.flush();
     if (!out) throw InputError(tmp, 0, "", "write failed");

@@ -3,8 +3,10 @@
 #include <png.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 
 namespace scanfilter {
@@ -143,7 +145,7 @@ void PngImage::save(const std::string& path) const {
   // interrupted save leaves no partial picture behind.
   const std::string tmp = path + ".partial";
   FILE* file = std::fopen(tmp.c_str(), "wb");
-  if (!file) throw std::runtime_error(path + ": cannot open for writing");
+  if (!file) throw std::runtime_error(tmp + ": cannot open for writing: " + std::strerror(errno));
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   png_infop info = png_create_info_struct(png);
   if (!png || !info || setjmp(png_jmpbuf(png))) {
