@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "namespace_check.hpp"
 #include "scanfilter/cli/option_checks.hpp"
 #include "scanfilter/dds/dds_participant.hpp"
 #include "scanfilter/dds/default_paths.hpp"
@@ -69,7 +70,7 @@ int main(int argc, char** argv) {
   bool upside_down = false;
   app.add_option("input", input, "scan log, CARMEN log or Mines URG-04LX log")->required()->check(CLI::ExistingFile);
   app.add_option("--domain", settings.domain_id, "DDS domain id")->check(CLI::Range(0, kMaxDomainId))->capture_default_str();
-  app.add_option("--namespace", ns, "topic namespace (rt/<ns>/scan)");
+  app.add_option("--namespace", ns, "topic namespace (rt/<ns>/scan)")->check(kNamespaceCheck);
   app.add_option("--profiles-file", settings.profiles_file, "Fast DDS XML profiles")->capture_default_str();
   app.add_option("--enclave", settings.security.enclave,
                  "DDS Security enclave directory (scanfilter-make-keystore; default: security off)");

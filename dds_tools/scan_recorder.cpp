@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "namespace_check.hpp"
 #include "scanfilter/cli/option_checks.hpp"
 #include "scanfilter/dds/dds_participant.hpp"
 #include "scanfilter/dds/default_paths.hpp"
@@ -43,7 +44,7 @@ int main(int argc, char** argv) {
   app.add_option("--domain", participant_settings.domain_id, "DDS domain id")
       ->check(CLI::Range(0, kMaxDomainId))
       ->capture_default_str();
-  app.add_option("--namespace", ns, "topic namespace (rt/<ns>/...)");
+  app.add_option("--namespace", ns, "topic namespace (rt/<ns>/...)")->check(kNamespaceCheck);
   app.add_option("--topic", topic, "topic name under rt/<ns>/")->capture_default_str();
   app.add_option("--profiles-file", participant_settings.profiles_file, "Fast DDS XML profiles")->capture_default_str();
   std::string enclave;

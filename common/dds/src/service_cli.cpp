@@ -8,6 +8,7 @@
 
 #include "scanfilter/dds/default_paths.hpp"
 #include "scanfilter/dds/metrics_address.hpp"
+#include "scanfilter/dds/topic_names.hpp"
 #include "scanfilter/input_error.hpp"
 
 namespace scanfilter::dds_io {
@@ -64,7 +65,13 @@ std::optional<int> ServiceCli::parse(int argc, char** argv) {
   ServiceSettings& s = config_.service;
   if (!log_level.empty()) s.log_level = log_level;
   if (domain) s.participant.domain_id = *domain;
-  if (ns) s.topic_namespace = *ns;
+  if (ns) {
+    if (const auto problem = topicNamespaceProblem(*ns)) {
+      std::cerr << name_ << ": error: --namespace: " << *problem << "\n";
+      return 2;
+    }
+    s.topic_namespace = *ns;
+  }
   if (metrics) {
     if (const auto problem = metricsAddressProblem(*metrics)) {
       std::cerr << name_ << ": error: --metrics-address: " << *problem << "\n";

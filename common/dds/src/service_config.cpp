@@ -5,6 +5,7 @@
 #include "scanfilter/dds/dds_participant.hpp"
 #include "scanfilter/dds/metrics_address.hpp"
 #include "scanfilter/dds/stream_qos.hpp"
+#include "scanfilter/dds/topic_names.hpp"
 #include "scanfilter/input_error.hpp"
 #include "scanfilter/yaml_section.hpp"
 
@@ -46,8 +47,7 @@ ServiceConfigFile loadServiceConfig(const std::string& path, const std::string& 
   section.requireRange("domain_id", s.participant.domain_id, 0, kMaxDomainId, "a DDS domain id 0-232");
   section.requireRange("queue_depth", s.stream.queue_depth, 1, kMaxQueueDepth, "an integer 1-100000");
   section.requireRange("max_blocking_s", s.stream.max_blocking_s, 0.001, 3600, "0.001-3600 (s)");
-  if (s.topic_namespace.find_first_of(" \t#") != std::string::npos || (!s.topic_namespace.empty() && (s.topic_namespace.front() == '/' || s.topic_namespace.back() == '/')))
-    section.fail("namespace", "expected a ROS name without spaces or leading/trailing '/', got \"" + s.topic_namespace + "\"");
+  if (const auto problem = topicNamespaceProblem(s.topic_namespace)) section.fail("namespace", *problem);
   if (const auto problem = metricsAddressProblem(s.metrics_address)) section.fail("metrics_address", *problem);
   section.requireFile("profiles_file", s.participant.profiles_file);
   s.participant.security = readSecuritySettings(section, file.directory);
