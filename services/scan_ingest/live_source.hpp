@@ -43,6 +43,9 @@ class LiveSource {
 
   std::size_t dropped() const { return dropped_; }
   std::size_t droppedHeld() const { return dropped_held_; }
+  // The driver's writers matched on rt/<ns>/scan and rt/<ns>/odom.
+  int scanWriters() const { return scan_reader_.matchedWriters(); }
+  int odometryWriters() const { return odom_reader_.matchedWriters(); }
 
  private:
   struct Pending {

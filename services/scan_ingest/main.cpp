@@ -52,7 +52,11 @@ bool waitForSubscribers(const ingest::ScanPlayer::Writer& writer, const IngestSe
 int runLive(ServiceRuntime& runtime, const IngestSettings& settings, ingest::ScanPlayer::Writer& writer) {
   constexpr auto kDrainPeriod = std::chrono::milliseconds(5);
   ServiceMetrics& metrics = runtime.metrics();
-  ingest::LiveSource live(runtime.participant(), runtime.settings().topic_namespace, settings.live, metrics);
+  const std::string& ns = runtime.settings().topic_namespace;
+  ingest::LiveSource live(runtime.participant(), ns, settings.live, metrics);
+  // The driver's side in the start line and scanfilter_dds_matched, as every stage's inputs are.
+  runtime.reportMatched("reader", rosTopic(ns, settings.live.scan_topic), [&] { return live.scanWriters(); });
+  runtime.reportMatched("reader", rosTopic(ns, settings.live.odom_topic), [&] { return live.odometryWriters(); });
   LabeledScanMsg msg;
   std::uint64_t sequence = 0;
   runtime.runUntilStopped(kDrainPeriod, [&] {

@@ -198,6 +198,9 @@ live)
   [ "$path_in" = "$path_out" ] || fail "poses differ: path $path_in m in, $path_out m out"
   info_out=$("$SF" info "$WORK/live.scanlog.jsonl")
   [[ "$info_out" =~ labels:\ *valid= ]] || fail "no labels in the output"
+  # The driver's side is in the start line, as every stage's inputs are.
+  grep -q "started: domain $DOMAIN, rt/scan and rt/odom -> rt/posed_scan" "$WORK/ingest.log" ||
+    fail "the live ingest's start line does not name the driver's topics: $(grep started: "$WORK/ingest.log")"
   live_equals_offline_replay
   ;;
 live_hold)

@@ -129,6 +129,9 @@ labels)
   wait "$REC" || fail "the secured recorder did not get $FRAMES scans"
   "$SF" diff "$WORK/offline.scanlog.jsonl" "$WORK/secured.scanlog.jsonl" ||
     fail "secured labels differ from the offline replay"
+  # Security on is said where an operator looks first: the start line (and systemd's STATUS).
+  grep -q "started: .*, DDS Security on (enclave $ENCLAVES/scan_ingest)" "$WORK/ingest.log" ||
+    fail "the secured ingest's start line does not say security is on: $(grep started: "$WORK/ingest.log")"
   ;;
 live)
   # A robot driver with its own enclave (driver: publishes rt/scan and

@@ -39,9 +39,12 @@ void ServiceRuntime::refreshGauges() {
 void ServiceRuntime::logStarted() const {
   std::vector<std::string> reads, writes;
   for (const auto& w : watched_) (w.endpoint == "reader" ? reads : writes).push_back(w.topic);
-  const std::string started = fmt::format("started: domain {}, {} -> {}, metrics http://{}/metrics",
+  // Security on is said: without it, a secured run looks exactly like an open one.
+  const std::string& enclave = config_.service.participant.security.enclave;
+  const std::string started = fmt::format("started: domain {}, {} -> {}, metrics http://{}/metrics{}",
                                           config_.service.participant.domain_id, joined(reads), joined(writes),
-                                          metrics_.address());
+                                          metrics_.address(),
+                                          enclave.empty() ? "" : ", DDS Security on (enclave " + enclave + ")");
   spdlog::info("{}", started);
   notifier_.ready(started);
 }
