@@ -1,6 +1,7 @@
 // CLI11 is slow to compile: this is the only file of the services that includes it.
 #include "scanfilter/dds/service_cli.hpp"
 
+#include <filesystem>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
@@ -35,7 +36,9 @@ ServiceCli::ServiceCli(std::string name, std::string description, std::string de
       own_sections_(std::move(own_sections)) {}
 
 std::optional<int> ServiceCli::parse(int argc, char** argv) {
-  CLI::App app{description_, name_};
+  // Usage names the program as it was run: scanfilter-jump-filter where installed, jump_filter in the build tree.
+  const std::string program = argc > 0 ? std::filesystem::path(argv[0]).filename().string() : name_;
+  CLI::App app{description_, program};
   // Bad arguments: one line (what and which), no usage dump.
   app.failure_message([](const CLI::App*, const CLI::Error& e) { return std::string(e.what()) + " (see --help)\n"; });
   app.set_version_flag("--version", name_ + " (scanfilter " + scanfilterVersion() + ")");
