@@ -69,7 +69,9 @@ SecuritySettings readSecuritySettings(YamlSection& service, const std::string& c
   if (std::filesystem::path(s.enclave).is_relative())
     s.enclave = (std::filesystem::path(config_directory) / s.enclave).lexically_normal().string();
   if (!std::filesystem::is_directory(s.enclave))
-    section.fail("enclave", "no such directory: " + s.enclave + " (scanfilter-make-keystore, deploy/security/make-keystore.sh in the source tree, makes one)");
+    section.fail("enclave", "no such directory: " + s.enclave +
+                                " (scanfilter-make-keystore, deploy/security/make-keystore.sh in the source tree, "
+                                "makes one)");
   if (const auto missing = missingEnclaveFiles(s.enclave); !missing.empty())
     section.fail("enclave", "the enclave lacks " + joined(missing));
   return s;
