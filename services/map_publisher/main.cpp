@@ -106,14 +106,22 @@ class MapService {
 
  private:
   void integrate(LabeledScanMsg& msg) {
-    runtime_.metrics().scanReceived();
+    const TimeMsg received = wallClockNow();
+    ServiceMetrics& service_metrics = runtime_.metrics();
+    service_metrics.scanReceived();
     if (const auto reason = rejectionReason(msg)) {
-      runtime_.metrics().sampleRejected(*reason);
+      service_metrics.sampleRejected(*reason);
       return;
     }
+    // The latencies as the filter stages meter them; this stage's "sent" is the scan in the map.
+    if (!msg.timing().empty()) service_metrics.hopLatency(toSeconds(received) - toSeconds(msg.timing().back().sent()));
     fromMessage(msg, scan_, sensor_);
     std::lock_guard lock(mutex_);
+    const auto start = std::chrono::steady_clock::now();
     grid_.integrate(scan_, sensor_, scan_.labels);
+    service_metrics.processingTime(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    if (!msg.timing().empty())
+      service_metrics.endToEndLatency(toSeconds(wallClockNow()) - toSeconds(msg.timing().front().sent()));
     metrics_.scanIntegrated();
     if (progress_.scans_integrated++ == loaded_scans_)  // which scan a restart resumed at
       spdlog::info("first scan integrated since start: sequence {}", msg.sequence_number());

@@ -323,6 +323,11 @@ YAML
     sleep 0.1
   done
   sleep 0.5  # one more publishing period after the last scan
+  # Its latencies and integration time, metered like a filter stage's: one observation a scan.
+  for histogram in processing_seconds hop_latency_seconds end_to_end_latency_seconds; do
+    n=$(metric 19474 "scanfilter_${histogram}_count\\{service=\"map_publisher\"\\}")
+    [ "$n" = $FRAMES ] || fail "map_publisher's scanfilter_${histogram} holds ${n:-no} observations, expected $FRAMES"
+  done
   probe=$("$BUILD/tests/map_probe" "$DOMAIN" "$SRC/deploy/fastdds-loopback.xml") || fail "the late subscriber got no map"
   echo "late subscriber: $probe"
   read -r width height resolution occupied <<< "$probe"

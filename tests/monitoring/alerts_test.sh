@@ -174,12 +174,13 @@ DRIVER=$!; PIDS+=($DRIVER)
 
 # 1. Healthy: all four up, scans coming out of every stage, rules without
 # errors, the map saved; only the latency alert fires (its budget is 10 us
-# here), for both filters, which observe the end-to-end latency.
+# here), for both filters and the map publisher, which observe the end-to-end latency.
 wait_query 'sum(up{job="scanfilter"})' 4 "the four services up"
 wait_query 'count(increase(scanfilter_scans_published_total{service=~"scan_ingest|jump_filter|penetration_filter"}[5s]) > 0)
             + count(increase(scanfilter_map_scans_integrated_total[5s]) > 0)' 4 "scans out of every stage"
 wait_query 'scanfilter_map_saves_total >= bool 5' 1 "five saves of the map"
 healthy="ScanfilterEndToEndLatencyOverBudget jump_filter
+ScanfilterEndToEndLatencyOverBudget map_publisher
 ScanfilterEndToEndLatencyOverBudget penetration_filter"
 wait_only_firing "$healthy"
 # The services' own `service` label is kept as it is (honor_labels).
