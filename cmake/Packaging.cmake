@@ -70,9 +70,12 @@ if(SCANFILTER_BUILD_SERVICES)
     set(SCANFILTER_DOCDIR \"${CMAKE_INSTALL_DATADIR}/doc/scanfilter\")
     include(\"${PROJECT_SOURCE_DIR}/cmake/install_layout.cmake\")")
 endif()
-# The keystore maker (docs/operations.md, "DDS Security"), under the
-# package's prefix like the services it makes enclaves for.
-install(PROGRAMS deploy/security/make-keystore.sh DESTINATION ${CMAKE_INSTALL_BINDIR} RENAME scanfilter-make-keystore)
+if(SCANFILTER_BUILD_SERVICES)
+  # The keystore maker (docs/operations.md, "DDS Security"), beside the
+  # services it makes enclaves for.
+  install(PROGRAMS deploy/security/make-keystore.sh DESTINATION ${CMAKE_INSTALL_BINDIR}
+          RENAME scanfilter-make-keystore)
+endif()
 # The README and docs/ side by side, as in the source tree, so that the
 # README's links to docs/ and the docs' links to each other and to their
 # pictures hold where they are installed.
@@ -105,6 +108,7 @@ set(CPACK_DEBIAN_PACKAGE_SECTION science)
 # adduser is what postinst creates the service user with.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "adduser")
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "openssl")  # scanfilter-make-keystore
 # Every installed config is a conffile: kept on remove, an admin's edits kept
 # on upgrade, deleted on purge.
 set(SCANFILTER_CONFFILES "")

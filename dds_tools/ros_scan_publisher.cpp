@@ -4,9 +4,9 @@
 // feeding rviz2 or slam_toolbox from a recording.
 #include <chrono>
 #include <cmath>
-#include <iomanip>
+#include <charconv>
 #include <iostream>
-#include <sstream>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -51,8 +51,14 @@ void toLaserScan(const Scan& scan, const SensorInfo& sensor, bool upside_down, c
 
 }  // namespace
 
-// Digits of the mount said for the live ingest's config: a yaw of π as π.
-constexpr int kMountDigits = 16;
+// A number as the shortest text that reads back as the same double (the
+// mount said for the live ingest's config: a yaw of π as π, exactly).
+static std::string shortest(double value) {
+  char text[32];
+  const auto [end, error] = std::to_chars(text, text + sizeof text, value);
+  return error == std::errc() ? std::string(text, end) : std::to_string(value);
+}
+
 // A launcher waiting for more readers than this has a typo, not a fleet.
 constexpr int kMaxWaitReaders = 1000;
 
@@ -98,11 +104,10 @@ int main(int argc, char** argv) {
     // A driver publishes no mount: the transform base -> laser is the live
     // ingest's to know (its `live` section), and a wrong one maps nonsense
     // without an error, so say what this log's is.
-    std::ostringstream mount;
-    mount << std::setprecision(kMountDigits) << "[" << sensor.mount.x << ", " << sensor.mount.y << ", "
-          << sensor.mount.yaw << "]";
-    std::cout << "the log's sensor is mounted at " << mount.str() << " on the base: give the live ingest `live: {mount: "
-              << mount.str() << (upside_down ? ", upside_down: true" : "") << "}`" << std::endl;
+    const std::string mount =
+        "[" + shortest(sensor.mount.x) + ", " + shortest(sensor.mount.y) + ", " + shortest(sensor.mount.yaw) + "]";
+    std::cout << "the log's sensor is mounted at " << mount << " on the base: give the live ingest `live: {mount: "
+              << mount << (upside_down ? ", upside_down: true" : "") << "}`" << std::endl;
     if (scans.matchedReaders() < wait_readers || odometry.matchedReaders() < wait_readers)
       std::cout << "waiting for " << wait_readers << " reader(s) of " << rosTopic(ns, "scan") << " and "
                 << rosTopic(ns, "odom") << " (--wait-readers)" << std::endl;

@@ -82,5 +82,19 @@ TEST(PoseBuffer, ForgetsOnlyWhatItOnceHeld) {
   EXPECT_FALSE(buffer.forgot(t(2.3))) << "within what is held";
 }
 
+// A driver restarted on simulated time: its odometry starts over, and the
+// scans of the new clock are posed at once.
+TEST(PoseBuffer, AClockThatWentBackStartsOver) {
+  PoseBuffer buffer(0.5, 1.0);
+  buffer.add(t(199.5), {0, 0, 0});
+  buffer.add(t(200.0), {1, 0, 0});
+  EXPECT_FALSE(buffer.add(t(199.8), {5, 5, 0})) << "a little back: an old sample, ignored";
+  EXPECT_TRUE(buffer.add(t(150.0), {2, 0, 0})) << "far back: a new clock";
+  buffer.add(t(150.2), {3, 0, 0});
+  ASSERT_TRUE(buffer.at(t(150.1)).has_value());
+  EXPECT_DOUBLE_EQ(buffer.at(t(150.1))->x, 2.5);
+  EXPECT_FALSE(buffer.forgot(t(149.0))) << "the old clock's samples are not 'forgotten' for the new one";
+}
+
 }  // namespace
 }  // namespace scanfilter

@@ -42,7 +42,8 @@ SUBSCRIBE=""
 CLOCK_SKEW_DAYS=1
 
 usage() { sed -n '2,28s/^# \{0,1\}//p' "$0"; }
-die() { echo "make-keystore.sh: $*" >&2; exit 2; }
+PROGRAM=$(basename "$0")  # scanfilter-make-keystore where installed
+die() { echo "$PROGRAM: $*" >&2; exit 2; }
 
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -184,7 +185,7 @@ mkdir -p "$PUB" "$PRIV" "$ENC"
 chmod 700 "$PRIV"
 if [ -n "$ADD_ENCLAVE" ]; then
   [[ "$ADD_ENCLAVE" == /* ]] || die "--add-enclave: expected an absolute enclave path like /robot/driver, got \"$ADD_ENCLAVE\""
-  [ -f "$ENC/governance.p7s" ] || die "$KS is not a keystore yet: run make-keystore.sh $KS first"
+  [ -f "$ENC/governance.p7s" ] || die "$KS is not a keystore yet: run $PROGRAM $KS first"
   make_governance  # only checks that it covers --domain
   make_enclave "$ADD_ENCLAVE" "$PUBLISH" "$SUBSCRIBE"
   exit 0

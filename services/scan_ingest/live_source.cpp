@@ -19,8 +19,9 @@ eprosima::fastdds::dds::DataReaderQos readerQos(const LiveSettings& settings) {
 LiveSource::LiveSource(dds_io::DdsParticipant& participant, const std::string& ns, const LiveSettings& settings,
                        dds_io::ServiceMetrics& metrics)
     : settings_(settings),
+      odometry_keep_s_(settings.max_pose_gap_s * kOdometryKeepFactor + settings.max_pose_wait_s),
       metrics_(metrics),
-      poses_(settings.max_pose_gap_s, settings.max_pose_gap_s * kOdometryKeepFactor + settings.max_pose_wait_s),
+      poses_(settings.max_pose_gap_s, odometry_keep_s_),
       odom_reader_(participant, dds_io::rosTopic(ns, settings.odom_topic), readerQos(settings),
                    [this](dds_io::OdometryMsg& msg) { onOdometry(msg); }),
       scan_reader_(participant, dds_io::rosTopic(ns, settings.scan_topic), readerQos(settings),
@@ -45,12 +46,16 @@ void LiveSource::onScan(dds_io::LaserScanMsg& msg) {
   Pending pending;
   dds_io::fromLaserScan(msg, settings_.mount, pending.scan, pending.sensor);
   pending.source = dds_io::sourceScanOf(msg);
-  pending.arrived = std::chrono::steady_clock::now();
+  pending.arrived = Clock::now();
   std::lock_guard lock(mutex_);
   // While the ingest holds (its reader downstream gone) nothing drains the
-  // queue: what can no longer be posed goes now, so an outage of hours does
-  // not fill the memory with scans.
-  while (!pending_.empty() && poses_.forgot(pending_.front().scan.stamp)) dropHeld();
+  // queue: what can no longer be posed goes now (and, should the odometry
+  // stop too, what waited longer than odometry is kept), so an outage of
+  // hours does not fill the memory with scans.
+  const auto too_long = std::chrono::duration<double>(odometry_keep_s_);
+  while (!pending_.empty() && holding(pending.arrived) &&
+         (poses_.forgot(pending_.front().scan.stamp) || pending.arrived - pending_.front().arrived > too_long))
+    dropHeld();
   pending_.push_back(std::move(pending));
 }
 

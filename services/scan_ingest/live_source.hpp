@@ -1,4 +1,5 @@
 #pragma once
+#include <atomic>
 #include <chrono>
 #include <deque>
 #include <mutex>
@@ -56,15 +57,30 @@ class LiveSource {
   };
   void onScan(dds_io::LaserScanMsg& msg);
   void onOdometry(dds_io::OdometryMsg& msg);
+  using Clock = std::chrono::steady_clock;
+  // Whether publish() has been blocked longer than a scan may wait for its
+  // odometry: the ingest holds (its reader downstream gone). mutex_ held.
+  bool holding(Clock::time_point now) const {
+    return publishing_ && now - publishing_since_ > std::chrono::duration<double>(settings_.max_pose_wait_s);
+  }
+  // Whether a scan arrived before a hold ended, or during one; a scan the
+  // odometry never covered, or whose odometry went back in time, did not.
+  bool waitedThroughHold(const Pending& pending, Clock::time_point now) const {
+    return holding(now) || pending.arrived <= last_hold_end_;
+  }
   void dropHeld();  // the oldest pending scan, which outlived its odometry; mutex_ held
 
   LiveSettings settings_;
+  double odometry_keep_s_;  // odometry is kept this many seconds of its stamps back
   dds_io::ServiceMetrics& metrics_;
   std::mutex mutex_;
   PoseBuffer poses_;
   std::deque<Pending> pending_;
+  bool publishing_ = false;             // drain() is in publish(), which may hold
+  Clock::time_point publishing_since_;  // when that publish() began
+  Clock::time_point last_hold_end_;     // when the last publish() that held returned
   std::size_t dropped_ = 0;
-  std::size_t dropped_held_ = 0;
+  std::atomic<std::size_t> dropped_held_{0};  // counted on a Fast DDS thread, read on the main one
   dds_io::TypedReader<nav_msgs::msg::dds_::Odometry_PubSubType> odom_reader_;
   dds_io::TypedReader<sensor_msgs::msg::dds_::LaserScan_PubSubType> scan_reader_;
 };
@@ -72,22 +88,27 @@ class LiveSource {
 template <typename Publish>
 void LiveSource::drain(Publish&& publish) {
   std::unique_lock lock(mutex_);
-  const auto now = std::chrono::steady_clock::now();
+  auto now = Clock::now();
   while (!pending_.empty()) {
     Pending& next = pending_.front();
     if (const auto pose = poses_.at(next.scan.stamp)) {
       next.scan.pose = *pose;
       Pending ready = std::move(next);
       pending_.pop_front();
+      publishing_ = true;
+      publishing_since_ = now;
       lock.unlock();
       publish(ready.scan, ready.sensor, ready.source);
       lock.lock();
+      publishing_ = false;
+      now = Clock::now();
+      if (now - publishing_since_ > std::chrono::duration<double>(settings_.max_pose_wait_s)) last_hold_end_ = now;
       continue;
     }
     const bool may_come = poses_.mayStillPose(next.scan.stamp) &&
                           now - next.arrived < std::chrono::duration<double>(settings_.max_pose_wait_s);
     if (may_come) break;  // odometry for this stamp may still arrive
-    if (poses_.forgot(next.scan.stamp)) {
+    if (poses_.forgot(next.scan.stamp) && waitedThroughHold(next, now)) {
       dropHeld();
       continue;
     }

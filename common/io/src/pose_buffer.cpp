@@ -7,6 +7,13 @@
 namespace scanfilter {
 
 bool PoseBuffer::add(Stamp stamp, const Pose2& pose) {
+  // A clock that went back further than what is kept (a driver restarted on
+  // simulated time, a recording looped) starts over: refusing its samples
+  // until it passed the old newest stamp would leave every scan unposed.
+  if (!samples_.empty() && samples_.back().stamp.secondsSince(stamp) > keep_) {
+    samples_.clear();
+    dropped_any_ = false;
+  }
   if (!samples_.empty() && stamp <= samples_.back().stamp) return false;
   if (samples_.empty() && !dropped_any_) first_stamp_ = stamp;
   samples_.push_back({stamp, pose});

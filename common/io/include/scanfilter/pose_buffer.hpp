@@ -14,7 +14,9 @@ class PoseBuffer {
  public:
   explicit PoseBuffer(double max_gap, double keep_seconds) : max_gap_(max_gap), keep_(keep_seconds) {}
 
-  // Adds a sample; samples must come in stamp order (older ones are ignored).
+  // Adds a sample; samples must come in stamp order (older ones are ignored,
+  // but one older by more than keep_seconds starts the buffer over: the
+  // odometry's clock went back).
   bool add(Stamp stamp, const Pose2& pose);
 
   // The pose at `stamp`, or nothing when the samples around it are missing
@@ -27,8 +29,8 @@ class PoseBuffer {
   bool mayStillPose(Stamp stamp) const { return samples_.empty() || samples_.back().stamp < stamp; }
 
   // True when the samples that would pose `stamp` were there and have been
-  // dropped as older than keep_seconds: the scan waited too long (a caller
-  // that held), not a gap in the odometry.
+  // dropped as older than keep_seconds. After a long gap in the odometry
+  // that is true too: the caller tells a scan that waited (it held) apart.
   bool forgot(Stamp stamp) const {
     return dropped_any_ && stamp >= first_stamp_ && !samples_.empty() && stamp < samples_.front().stamp;
   }
