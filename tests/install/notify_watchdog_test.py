@@ -11,7 +11,10 @@ WatchdogSec=):
      service loop blocks in open() holding the map, and the reader's worker
      blocks behind it; no test hook in the service;
   4. once the FIFO is read (the write completes), the pings resume;
-  5. SIGTERM: STOPPING=1, exit 0.
+  5. SIGTERM: STOPPING=1, exit 0;
+  6. a jump_filter holding for a reader that is gone (required_readers 1,
+     no penetration_filter) keeps pinging: a hold is a deliberate wait, not
+     a hang, and the watchdog must not kill a stage with a scan in its hands.
 
 The pipeline feeding it (scan_ingest -> jump_filter -> penetration_filter) is
 the build tree's real services. Runs in a private network namespace when it
@@ -241,7 +244,46 @@ playback: {{wait_for_subscribers: 1, wait_timeout_s: 30, exit_at_end: true}}
         fail("no STOPPING=1 on SIGTERM")
     notify.closed = True
     print("SIGTERM: STOPPING=1, exit 0")
+    holding_stage_keeps_pinging(profiles, scans)
     print("PASS")
+
+
+def holding_stage_keeps_pinging(profiles, scans):
+    domain = DOMAIN + 1  # away from the first part's services, still running
+    notify = NotifySocket(os.path.join(work, "notify_jump.sock"))
+    env = dict(os.environ, NOTIFY_SOCKET=notify.path, WATCHDOG_USEC=str(int(WATCHDOG_S * 1e6)))
+    jump_config = write("jump_hold.yaml", f"""
+service: {{domain_id: {domain}, profiles_file: {profiles}, metrics_address: 127.0.0.1:19482, required_readers: 1}}
+filter: {{config: {os.path.join(SRC, "config", "filter.yaml")}}}
+""")
+    jump = start("jump_hold", ["sh", "-c", 'WATCHDOG_PID=$$ exec "$0" "$@"',
+                               os.path.join(BUILD, "services", "jump_filter"), "--config", jump_config], env)
+    if notify.wait_for("READY=1", READY_TIMEOUT_S, until_exit=jump) is None:
+        fail(f"the holding jump_filter sent no READY=1 (exit status {jump.poll()})")
+    ingest_config = write("scan_ingest_hold.yaml", f"""
+service: {{domain_id: {domain}, profiles_file: {profiles}, metrics_address: 127.0.0.1:19481}}
+source: {{kind: log, path: {scans}, rate: max}}
+playback: {{wait_for_subscribers: 1, wait_timeout_s: 30, exit_at_end: true}}
+""")
+    start("scan_ingest_hold", [os.path.join(BUILD, "services", "scan_ingest"), "--config", ingest_config])
+    log_path = os.path.join(work, "jump_hold.log")
+    deadline = time.monotonic() + FEED_TIMEOUT_S
+    holding_since = None
+    while holding_since is None and time.monotonic() < deadline:
+        with open(log_path, errors="replace") as f:
+            if "holding rt/jump_filtered_scan" in f.read():
+                holding_since = time.monotonic()
+        time.sleep(0.05)
+    if holding_since is None:
+        fail(f"the jump_filter without a reader did not hold within {FEED_TIMEOUT_S} s")
+    time.sleep(3 * WATCHDOG_S)
+    now = time.monotonic()
+    pings = notify.times_of("WATCHDOG=1", holding_since)
+    gap = largest_gap(pings, holding_since, now)
+    if gap > WATCHDOG_S / 2 or notify.lines_starting("STATUS=stalled:"):
+        fail(f"holding: largest gap between WATCHDOG=1 {gap:.2f} s; {notify.lines_starting('STATUS=stalled:')}")
+    print(f"holding: {len(pings)} WATCHDOG=1 in {now - holding_since:.1f} s of holding, largest gap {gap:.2f} s")
+    notify.closed = True
 
 
 try:

@@ -71,3 +71,32 @@ TEST(ProgressHeartbeat, NamesTheStaleOneAmongRecentOnes) {
   ASSERT_TRUE(stale);
   EXPECT_EQ(stale->name, "stuck");
 }
+
+// A writer holding for a reader that is gone waits on the thread that does
+// the stage's work: that wait beats the thread's own heartbeat, and no other.
+TEST(ProgressHeartbeat, AHoldOnTheThreadThatBeatsItKeepsItRecent) {
+  ProgressHeartbeat loop("loop");
+  loop.beat();  // this thread's heartbeat from now on
+  std::this_thread::sleep_for(kOld);
+  ASSERT_TRUE(ProgressHeartbeat::findStale(kLimit));
+  std::thread other([] { ProgressHeartbeat::beatThisThread(); });
+  other.join();
+  const auto still = ProgressHeartbeat::findStale(kLimit);
+  ASSERT_TRUE(still) << "another thread's wait beat this thread's heartbeat";
+  EXPECT_GE(still->age, kOld);
+  const auto beaten = std::chrono::steady_clock::now();
+  ProgressHeartbeat::beatThisThread();
+  const auto stale = ProgressHeartbeat::findStale(kLimit);
+  if (stale) {  // only if descheduled past the limit, and then no older than the beat
+    EXPECT_LE(stale->age, std::chrono::steady_clock::now() - beaten);
+  }
+}
+
+TEST(ProgressHeartbeat, AThreadsDestroyedHeartbeatIsNotBeaten) {
+  {
+    ProgressHeartbeat gone("gone");
+    gone.beat();
+  }
+  ProgressHeartbeat::beatThisThread();  // nothing left to beat (a use after free under ASan otherwise)
+  EXPECT_FALSE(ProgressHeartbeat::findStale(kLimit));
+}

@@ -22,6 +22,10 @@ Registry& registry() {
 
 std::chrono::steady_clock::rep nowTicks() { return std::chrono::steady_clock::now().time_since_epoch().count(); }
 
+// The heartbeat that last beat on this thread (a heartbeat is beaten by one
+// thread: a reader's worker, the service loop).
+thread_local ProgressHeartbeat* this_threads_heartbeat = nullptr;
+
 }  // namespace
 
 ProgressHeartbeat::ProgressHeartbeat(std::string name) : name_(std::move(name)), last_beat_(nowTicks()) {
@@ -30,6 +34,7 @@ ProgressHeartbeat::ProgressHeartbeat(std::string name) : name_(std::move(name)),
 }
 
 ProgressHeartbeat::~ProgressHeartbeat() {
+  if (this_threads_heartbeat == this) this_threads_heartbeat = nullptr;
   std::lock_guard lock(registry().mutex);
   auto& beats = registry().beats;
   beats.erase(std::remove(beats.begin(), beats.end(), this), beats.end());
@@ -38,6 +43,11 @@ ProgressHeartbeat::~ProgressHeartbeat() {
 void ProgressHeartbeat::beat() {
   last_beat_.store(nowTicks(), std::memory_order_relaxed);
   idle_.store(false, std::memory_order_relaxed);
+  this_threads_heartbeat = this;
+}
+
+void ProgressHeartbeat::beatThisThread() {
+  if (this_threads_heartbeat != nullptr) this_threads_heartbeat->beat();
 }
 
 void ProgressHeartbeat::idle() { idle_.store(true, std::memory_order_relaxed); }

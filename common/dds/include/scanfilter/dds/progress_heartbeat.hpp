@@ -23,6 +23,12 @@ class ProgressHeartbeat {
   // Waiting for a timer (a bounded wait, not work): not stale until the
   // next beat(), however long the wait.
   void idle();
+  // A deliberate, logged wait on the calling thread (a writer holding while
+  // its reader is gone: docs/operations.md, "Crashed readers") is progress:
+  // beats the heartbeat that last beat on this thread, if any. Without it
+  // the watchdog would have a holding stage killed ~10 s into an outage
+  // downstream, with the scan in its hands.
+  static void beatThisThread();
 
   // The name of a registered heartbeat that has not beaten for longer than
   // max_age and for how long, or nullopt when every one is recent.

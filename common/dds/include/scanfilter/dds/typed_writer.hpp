@@ -13,6 +13,7 @@
 
 #include "scanfilter/dds/checked_type_support.hpp"
 #include "scanfilter/dds/dds_participant.hpp"
+#include "scanfilter/dds/progress_heartbeat.hpp"
 #include "scanfilter/dds/stream_qos.hpp"
 
 namespace scanfilter::dds_io {
@@ -111,6 +112,7 @@ class TypedWriter : private eprosima::fastdds::dds::DataWriterListener {
                  required_readers_);
     while (matched_.load() < required_readers_) {
       if (stop_()) return false;
+      ProgressHeartbeat::beatThisThread();  // holding is this thread's work now, not a hang
       std::this_thread::sleep_for(kHoldPoll);
     }
     std::this_thread::sleep_for(kDiscoverySettle);  // the reader must match us too before a volatile sample
@@ -126,6 +128,7 @@ class TypedWriter : private eprosima::fastdds::dds::DataWriterListener {
                  "discovery to drop it and a replacement to match", topic_, max_wait_s_);
     while (!waitForAcknowledgments(std::chrono::duration<double>(kHoldPoll).count())) {
       if (stop_()) return false;
+      ProgressHeartbeat::beatThisThread();
     }
     resumed(start);
     return true;
