@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <functional>
@@ -78,7 +79,7 @@ class TypedWriter : private eprosima::fastdds::dds::DataWriterListener {
     if (rc != eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK) return Outcome::kRefused;
     if (window_ > 0 && ++unacknowledged_ >= window_) {
       unacknowledged_ = 0;
-      if (!waitForAcknowledgments(max_wait_s_) && !(stop_ && holdUntilAcknowledged())) {
+      if (!waitForAcknowledgmentsBeating(max_wait_s_) && !(stop_ && holdUntilAcknowledged())) {
         last_error_ = eprosima::fastrtps::types::ReturnCode_t::RETCODE_TIMEOUT;
         return Outcome::kSentUnacknowledged;
       }
@@ -118,6 +119,20 @@ class TypedWriter : private eprosima::fastdds::dds::DataWriterListener {
     std::this_thread::sleep_for(kDiscoverySettle);  // the reader must match us too before a volatile sample
     resumed(start);
     return !stop_();
+  }
+
+  // The flow-control wait (up to max_blocking_s, 5 s by default: half the
+  // watchdog's 10 s) in slices, beating the thread's heartbeat between them:
+  // a reader slow to acknowledge is a wait, not this thread hanging.
+  bool waitForAcknowledgmentsBeating(double seconds) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    const double slice = std::chrono::duration<double>(kHoldPoll).count();
+    for (;;) {
+      const double left = std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count();
+      if (waitForAcknowledgments(std::clamp(left, 0.0, slice))) return true;
+      if (left <= slice) return false;
+      ProgressHeartbeat::beatThisThread();
+    }
   }
 
   // After a flow-control wait timed out: until every matched reader
