@@ -64,7 +64,9 @@ KS="$1"
 [[ "$DOMAIN" =~ ^[0-9]+$ ]] && [ "$DOMAIN" -le 232 ] || die "--domain: expected a DDS domain id 0-232, got \"$DOMAIN\""
 [[ "$DAYS" =~ ^[1-9][0-9]*$ ]] || die "--days: expected a positive number of days, got \"$DAYS\""
 [[ "$ROOT" == /* ]] || die "--root: expected an absolute enclave path like /scanfilter, got \"$ROOT\""
-[[ "$NAMESPACE" != /* && "$NAMESPACE" != */ ]] || die "--namespace: no leading or trailing '/', got \"$NAMESPACE\""
+# The services' own rule (topicNamespaceProblem): a ROS name without spaces, '#' or a leading or trailing '/'.
+[[ "$NAMESPACE" != /* && "$NAMESPACE" != */ && "$NAMESPACE" != *[[:space:]#]* ]] ||
+  die "--namespace: expected a ROS name without spaces or leading/trailing '/', got \"$NAMESPACE\""
 command -v openssl > /dev/null || die "openssl is not installed"
 
 PUB="$KS/public" PRIV="$KS/private" ENC="$KS/enclaves"
