@@ -2,9 +2,9 @@
 // sensor_msgs/LaserScan on rt/<ns>/scan and nav_msgs/Odometry on rt/<ns>/odom
 // (best effort, ROS 2 sensor-data QoS). For trying the live ingest, and for
 // feeding rviz2 or slam_toolbox from a recording.
+#include <charconv>
 #include <chrono>
 #include <cmath>
-#include <charconv>
 #include <iostream>
 #include <string>
 
@@ -49,11 +49,9 @@ void toLaserScan(const Scan& scan, const SensorInfo& sensor, bool upside_down, c
   out.intensities().assign(scan.intensities.begin(), scan.intensities.end());
 }
 
-}  // namespace
-
 // A number as the shortest text that reads back as the same double (the
 // mount said for the live ingest's config: a yaw of π as π, exactly).
-static std::string shortest(double value) {
+std::string shortest(double value) {
   char text[32];
   const auto [end, error] = std::to_chars(text, text + sizeof text, value);
   return error == std::errc() ? std::string(text, end) : std::to_string(value);
@@ -61,6 +59,8 @@ static std::string shortest(double value) {
 
 // A launcher waiting for more readers than this has a typo, not a fleet.
 constexpr int kMaxWaitReaders = 1000;
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"ros_scan_publisher: publish a scan log as LaserScan (rt/<ns>/scan) and Odometry (rt/<ns>/odom)"};

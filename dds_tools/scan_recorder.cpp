@@ -53,7 +53,8 @@ int main(int argc, char** argv) {
                  "--config's service.security)");
   app.add_option("--count", count, "stop after this many scans (0: until SIGINT/SIGTERM)")
       ->check(cli::wholeNumber("a scan count"));
-  app.add_option("--timeout", timeout_s, "stop after this many seconds (0: no limit)")->check(cli::numberAtLeast(0.0, "s"));
+  app.add_option("--timeout", timeout_s, "stop after this many seconds (0: no limit)")
+      ->check(cli::numberAtLeast(0.0, "s"));
   app.add_option("--idle-exit", idle_exit_s, "stop once no scan arrived for this many seconds after the first (0: never)")
       ->check(cli::numberAtLeast(0.0, "s"));
   // A launcher polls these lines to know when the recorder holds everything;

@@ -309,8 +309,12 @@ TEST(FilterConfigErrors, AliasesAreNeitherACycleNorABillionNodes) {
 
 // Integers as a person writes them: yaml-cpp alone reads 010 as octal 8.
 TEST(FilterConfig, IntegersAreDecimal) {
-  EXPECT_EQ(parseFilterConfig("penetration_filter:\n  max_cache_frames: 010\n", "f.yaml").params.penetration.max_cache_frames, 10u);
-  EXPECT_EQ(parseFilterConfig("penetration_filter:\n  max_cache_frames: +12\n", "f.yaml").params.penetration.max_cache_frames, 12u);
+  const auto frames = [](const std::string& value) {
+    return parseFilterConfig("penetration_filter:\n  max_cache_frames: " + value + "\n", "f.yaml")
+        .params.penetration.max_cache_frames;
+  };
+  EXPECT_EQ(frames("010"), 10u);
+  EXPECT_EQ(frames("+12"), 12u);
   EXPECT_EQ(errorOf("penetration_filter:\n  max_cache_frames: 0x10\n"),
             "f.yaml:2: penetration_filter.max_cache_frames: expected an integer, got \"0x10\"");
 }

@@ -67,7 +67,8 @@ TEST(PoseBuffer, OutOfOrderSamplesAreIgnoredAndOldOnesDropped) {
 }
 
 // A scan that waited while its odometry aged out is told apart from one
-// the odometry never covered (before the first sample, or in a gap).
+// from before the first sample. (After a long gap forgot() is true too: the
+// live ingest tells a scan that waited through a hold apart, LiveSource.)
 TEST(PoseBuffer, ForgetsOnlyWhatItOnceHeld) {
   PoseBuffer buffer(0.5, 1.0);
   buffer.add(t(1.0), {0, 0, 0});

@@ -114,38 +114,35 @@ TEST(Simulator, OdometryDriftIsOnUnlessTheSceneTurnsItOff) {
   EXPECT_EQ(more.odometry.scale_error, sim::kDefaultOdometryDrift.scale_error) << "a key left out keeps its default";
 }
 
-TEST(SimulatorErrors, BadSceneNamesFileLineAndKey) {
+// The error a scene file gives, as text.
+std::string sceneError(const std::string& yaml) {
   try {
-    sim::parseScene("walls:\n  - {points: [[0, 0], [1, 0]], material: velvet}\ntrajectory: {waypoints: [[0,0],[1,1]]}\n", "s.yaml");
-    FAIL() << "no error";
+    sim::parseScene(yaml, "s.yaml");
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "s.yaml:2: walls[0].material: expected rough, smooth or glass, got \"velvet\"");
+    return e.what();
   }
+  return "no error";
+}
+
+TEST(SimulatorErrors, BadSceneNamesFileLineAndKey) {
+  EXPECT_EQ(sceneError("walls:\n  - {points: [[0, 0], [1, 0]], material: velvet}\ntrajectory: {waypoints: [[0,0],[1,1]]}\n"),
+            "s.yaml:2: walls[0].material: expected rough, smooth or glass, got \"velvet\"");
   EXPECT_THROW(sim::findScene("no-such-scene"), InputError);
 }
 
 TEST(SimulatorErrors, AKeyGivenTwiceInAListedItemNamesTheItem) {
-  try {
-    sim::parseScene("walls:\n  - {points: [[0, 0], [1, 0]], material: glass, material: rough}\n", "s.yaml");
-    FAIL() << "no error";
-  } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "s.yaml:2: walls[0].material: duplicate key (first on line 2); give each key once");
-  }
+  EXPECT_EQ(sceneError("walls:\n  - {points: [[0, 0], [1, 0]], material: glass, material: rough}\n"),
+            "s.yaml:2: walls[0].material: duplicate key (first on line 2); give each key once");
 }
 
 // A robot cannot drive through a wall or a leg: scans from there are no
 // robot's (the home tour did, docs/simulator.md).
 TEST(SimulatorErrors, ATourThroughAWallNamesTheWaypoint) {
   const std::string wall = "walls:\n  - {points: [[1, -1], [1, 1]]}\n";
-  try {
-    sim::parseScene(wall + "trajectory:\n  waypoints: [[0, 0.5], [0, 0], [2, 0]]\n", "s.yaml");
-    FAIL() << "no error";
-  } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(),
-                 "s.yaml:4: trajectory.waypoints[1]: the way from here to waypoints[2] passes 0.000 m from the wall "
-                 "or box side (1.00, -1.00)-(1.00, 1.00), nearer than trajectory.robot_radius (0.170 m): the robot "
-                 "would drive through it");
-  }
+  EXPECT_EQ(sceneError(wall + "trajectory:\n  waypoints: [[0, 0.5], [0, 0], [2, 0]]\n"),
+            "s.yaml:4: trajectory.waypoints[1]: the way from here to waypoints[2] passes 0.000 m from the wall "
+            "or box side (1.00, -1.00)-(1.00, 1.00), nearer than trajectory.robot_radius (0.170 m): the robot "
+            "would drive through it");
 }
 
 TEST(SimulatorErrors, ATourMustKeepTheRobotRadiusFromALeg) {

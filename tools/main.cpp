@@ -39,7 +39,8 @@ int main(int argc, char** argv) {
   auto* simulate = app.add_subcommand("simulate", "Simulate a labelled scan log of a scene");
   simulate->add_option("--scene", sim.scene, "built-in scene name (hall, home, office) or a scene YAML file")->capture_default_str();
   simulate->add_option("--sensor", sim.sensor, "sensor preset (tof, triangulation) or a sensor YAML file; default: the scene's own sensor");
-  simulate->add_option("--beams", sim.beams, "beams a turn (angular step 360°/N); default: the sensor's own")->check(CLI::Range(1, scanfilter::sim::kMaxSimulatedBeams));
+  simulate->add_option("--beams", sim.beams, "beams a turn (angular step 360°/N); default: the sensor's own")
+      ->check(CLI::Range(1, scanfilter::sim::kMaxSimulatedBeams));
   simulate->add_flag("--true-poses", sim.true_poses, "log the true poses (default: odometry with the scene's drift, 1 %, 0.5°/m)");
   simulate->add_option("--seed", sim.seed, "random seed: same scene and seed, same scans")
       ->capture_default_str()

@@ -16,13 +16,11 @@ std::string shareOrNa(double share, std::size_t of) {
 }
 
 void printClass(std::ostream& out, const char* name, const RemovalClassScore& s) {
-  // F1 is 0 when either side is empty and the other is not: every artefact
-  // missed, or every removal wrong. Only with neither is there nothing to score.
-  const std::size_t f1_of = s.truth + s.labelled;
-  const double f1 = s.truth == 0 || s.labelled == 0 ? 0.0 : s.f1();
+  // F1 needs a recall: none without truth. With truth and nothing removed it
+  // is 0 (recall 0), as the ratios give it.
   out << "  " << std::left << std::setw(13) << name << std::right << std::setw(9) << s.truth << std::setw(10)
       << shareOrNa(s.precision(), s.labelled) << std::setw(10) << shareOrNa(s.recall(), s.truth) << std::setw(10)
-      << shareOrNa(f1, f1_of) << "\n";
+      << shareOrNa(s.f1(), s.truth) << "\n";
 }
 
 constexpr int kCauseColumn = 31;  // characters: "displaced at grazing incidence" and a space

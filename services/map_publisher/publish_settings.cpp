@@ -19,16 +19,10 @@ PublishSettings readPublishSettings(const dds_io::ServiceConfigFile& config) {
   section.rejectUnknownKeys();
   s.save_path = config.resolvePath(s.save_path);
   // A typo in the folder would show only at the first save, a period later.
-  std::error_code error;
-  const auto folder = std::filesystem::path(s.save_path).parent_path();
-  if (!s.save_path.empty() && !folder.empty() && !std::filesystem::is_directory(folder, error)) {
-    // Not "no such folder" when it could not be looked at (a folder the service's user may not enter).
-    const bool absent = !error || error == std::errc::no_such_file_or_directory;
-    const std::string why = absent ? "no such folder: " + folder.string()
-                                   : "cannot look at " + folder.string() + ": " + error.message();
-    section.fail("save_path", why + " (the map is saved as " +
-                                  std::filesystem::path(s.save_path).filename().string() + ".pgm/.yaml/.png in it)");
-  }
+  const std::filesystem::path base(s.save_path);
+  if (!s.save_path.empty() && base.has_parent_path())
+    section.requireFolder("save_path", base.parent_path().string(),
+                          " (the map is saved as " + base.filename().string() + ".pgm/.yaml/.png in it)");
   return s;
 }
 

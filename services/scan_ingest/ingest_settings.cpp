@@ -10,7 +10,6 @@
 
 namespace scanfilter::ingest {
 
-
 IngestSettings readIngestSettings(const dds_io::ServiceConfigFile& config) {
   IngestSettings s;
   YamlSection source(config.root, "source", config.path);
@@ -29,8 +28,9 @@ IngestSettings readIngestSettings(const dds_io::ServiceConfigFile& config) {
   if (s.kind == "simulator") {
     // A scene file, like the log, is found from the config's folder (a
     // service's working directory is /); a built-in name stays as it is.
+    const std::string as_file = config.resolvePath(s.scene);
     std::error_code error;
-    if (std::filesystem::is_regular_file(config.resolvePath(s.scene), error)) s.scene = config.resolvePath(s.scene);
+    if (std::filesystem::is_regular_file(as_file, error)) s.scene = as_file;
     try {
       sim::findScene(s.scene);
     } catch (const InputError& e) {

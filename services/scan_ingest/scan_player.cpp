@@ -51,8 +51,8 @@ std::uint64_t ScanPlayer::play() {
           record.scan.stamp.secondsSince(first_stamp) / rate_.speed + (writer_.heldSeconds() - held_at_start);
       const auto due = start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                    std::chrono::duration<double>(due_s));
-      waitUntilDue(due, sequence, record.scan.stamp.secondsSince(latest_stamp) / rate_.speed);
-      if (dds_io::ShutdownSignal::requested()) break;  // stopped while waiting
+      if (waitUntilDue(due, sequence, record.scan.stamp.secondsSince(latest_stamp) / rate_.speed))
+        break;  // stopped while waiting
     }
     latest_stamp = std::max(latest_stamp, record.scan.stamp);
     record.scan.labels.clear();  // the filters write labels; a log's old ones are not passed on
@@ -78,7 +78,7 @@ std::uint64_t ScanPlayer::play() {
   return sequence - first_sequence;
 }
 
-void ScanPlayer::waitUntilDue(std::chrono::steady_clock::time_point due, std::uint64_t sequence, double pause_s) const {
+bool ScanPlayer::waitUntilDue(std::chrono::steady_clock::time_point due, std::uint64_t sequence, double pause_s) const {
   using std::chrono::steady_clock;
   // Decided on the recording, not on the time left: the same log says the
   // same, however busy the machine.
@@ -86,7 +86,7 @@ void ScanPlayer::waitUntilDue(std::chrono::steady_clock::time_point due, std::ui
     spdlog::info("waiting {:.1f} s for scan {}: the recording pauses {:.1f} s before it "
                  "(source.rate: max, or a larger speed factor, plays faster)",
                  std::max(0.0, std::chrono::duration<double>(due - steady_clock::now()).count()), sequence, pause_s);
-  dds_io::ShutdownSignal::waitUntil(due);  // SIGINT/SIGTERM end it at once, however long the pause
+  return dds_io::ShutdownSignal::waitUntil(due);  // SIGINT/SIGTERM end it at once, however long the pause
 }
 
 }  // namespace scanfilter::ingest

@@ -47,9 +47,9 @@ class ScanPlayer {
 
  private:
   // Sleeps until `due`, the time scan `sequence` is to go out, or until a
-  // shutdown is requested; first says so when the recording pauses there
-  // (`pause_s`, at the rate's speed) for more than wait_notice_s.
-  void waitUntilDue(std::chrono::steady_clock::time_point due, std::uint64_t sequence, double pause_s) const;
+  // shutdown is requested (then true); first says so when the recording
+  // pauses there (`pause_s`, at the rate's speed) for more than wait_notice_s.
+  bool waitUntilDue(std::chrono::steady_clock::time_point due, std::uint64_t sequence, double pause_s) const;
 
   ScanSource& source_;
   Writer& writer_;

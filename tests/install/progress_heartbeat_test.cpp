@@ -3,6 +3,7 @@
 // a timer) never is, and a destroyed one is forgotten. Ages come from sleeping
 // at least that long, so the outcomes do not depend on the machine's speed.
 #include <chrono>
+#include <new>
 #include <optional>
 #include <thread>
 
@@ -92,11 +93,19 @@ TEST(ProgressHeartbeat, AHoldOnTheThreadThatBeatsItKeepsItRecent) {
   }
 }
 
+// The thread forgets a heartbeat destroyed: its next wait beats nothing,
+// not whatever lives where the dead one did. The second heartbeat is made
+// in the first one's storage, so a dangling pointer would beat it.
 TEST(ProgressHeartbeat, AThreadsDestroyedHeartbeatIsNotBeaten) {
-  {
-    ProgressHeartbeat gone("gone");
-    gone.beat();
-  }
-  ProgressHeartbeat::beatThisThread();  // nothing left to beat (a use after free under ASan otherwise)
-  EXPECT_FALSE(ProgressHeartbeat::findStale(kLimit));
+  alignas(ProgressHeartbeat) unsigned char storage[sizeof(ProgressHeartbeat)];
+  auto* gone = new (storage) ProgressHeartbeat("gone");
+  gone->beat();
+  gone->~ProgressHeartbeat();
+  auto* later = new (storage) ProgressHeartbeat("later");
+  std::this_thread::sleep_for(kOld);
+  ProgressHeartbeat::beatThisThread();
+  const auto stale = ProgressHeartbeat::findStale(kLimit);
+  later->~ProgressHeartbeat();
+  ASSERT_TRUE(stale) << "a wait beat a heartbeat this thread never beat";
+  EXPECT_EQ(stale->name, "later");
 }

@@ -46,6 +46,22 @@ std::string childPath(const std::string& path, const std::string& child) {
   return path.empty() ? child : path + "." + child;
 }
 
+// What keeps `path` from being used as a file (or a folder), or nothing.
+// The error_code forms: a name too long for the file system is not a
+// filesystem_error thrown (found by penetration_filter_config_fuzz); and
+// a path that could not be looked at (a folder the service's user may not
+// enter) is said as such, not as "no such file".
+std::optional<std::string> pathProblem(const std::string& path, bool folder) {
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (error && error != std::errc::no_such_file_or_directory)
+    return "cannot look at " + path + ": " + error.message();
+  if (!std::filesystem::exists(status)) return (folder ? "no such folder: " : "no such file: ") + path;
+  if (folder && !std::filesystem::is_directory(status)) return "not a folder: " + path;
+  if (!folder && std::filesystem::is_directory(status)) return "is a directory, expected a file: " + path;
+  return std::nullopt;
+}
+
 // YAML allows a key once in a mapping. yaml-cpp keeps both entries and
 // answers the first, so a line appended to override a setting would be
 // ignored without a word. Each mapping is checked once, where it is written:
@@ -164,14 +180,11 @@ void YamlSection::failOutOfRange(const char* key, double value, const char* expe
 }
 
 void YamlSection::requireFile(const char* key, const std::string& path) const {
-  // The error_code forms: a name too long for the file system is "no such
-  // file" too, not a filesystem_error (found by penetration_filter_config_fuzz).
-  std::error_code error;
-  const bool exists = std::filesystem::exists(path, error);
-  // Not "no such file" when it could not be looked at (a folder the service's user may not enter).
-  if (error) fail(key, "cannot look at " + path + ": " + error.message());
-  if (!exists) fail(key, "no such file: " + path);
-  if (std::filesystem::is_directory(path, error)) fail(key, "is a directory, expected a file: " + path);
+  if (const auto problem = pathProblem(path, false)) fail(key, *problem);
+}
+
+void YamlSection::requireFolder(const char* key, const std::string& path, const std::string& note) const {
+  if (const auto problem = pathProblem(path, true)) fail(key, *problem + note);
 }
 
 void YamlSection::fail(const char* key, const std::string& problem) const {

@@ -57,8 +57,10 @@ class YamlSection {
   }
 
   // Fails unless `path` (the key's value, resolved) names an existing file,
-  // so that a wrong path is reported at the line that gave it.
+  // or folder, so that a wrong path is reported at the line that gave it;
+  // `note` is added to the message (what the folder is for).
   void requireFile(const char* key, const std::string& path) const;
+  void requireFolder(const char* key, const std::string& path, const std::string& note) const;
 
   // A key that no read asked for is an error; a known key within a few
   // letters of it is named (a misspelling), else the known keys are listed.
